@@ -1,0 +1,128 @@
+#include "figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "common/merged_grid.hpp"
+#include "common/plot.hpp"
+#include "common/trace_transfer.hpp"
+
+namespace chapter01 {
+
+using mortar::Figure;
+using mortar::Series;
+
+namespace {
+// A row of grid nodes drawn as tick marks at height y.
+Series grid_row(const std::vector<double>& x, double y, const std::string& title,
+                const std::string& extra) {
+  Series s{title, x, std::vector<double>(x.size(), y), "points", extra};
+  return s;
+}
+
+constexpr double floor_value = 1e-17;  // exact zeros cannot sit on a log axis
+}  // namespace
+
+void plot_transfers(const std::string& folder, const TransferResult& r, const TraceFunction& w,
+                    bool run) {
+  Figure fig;
+  char title[256];
+  std::snprintf(title, sizeof title,
+                "%s trace from side 2 (%d elements) to side 1 (%d elements):  "
+                "int w2 = %.5f,  int pointwise = %.5f,  int mortar = %.5f",
+                w.name.c_str(), r.trace2.num_elements(), r.trace1.num_elements(),
+                mortar::integral(r.trace2, r.w2), mortar::integral(r.trace1, r.pointwise),
+                mortar::integral(r.trace1, r.mortar));
+  fig.title = title;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "trace value w [m]";
+  fig.key = "outside right top";
+  fig.width = 1200;
+  fig.height = 650;
+  Series exact{"exact w", {}, {}, "lines", "lw 1 lc rgb '#000000'"};
+  for (int i = 0; i <= 400; ++i) {
+    const double x = w.L * i / 400.0;
+    exact.x.push_back(x);
+    exact.y.push_back(w.value(x));
+  }
+  fig.series.push_back(exact);
+  fig.series.push_back({"w2: interpolant on side 2", r.trace2.x, r.w2, "linespoints",
+                        "pt 6 lw 1 lc rgb '#888888'"});
+  fig.series.push_back({"pointwise transfer to side 1", r.trace1.x, r.pointwise, "linespoints",
+                        "pt 9 ps 1.5 lw 2 lc rgb '#d62728'"});
+  fig.series.push_back({"mortar projection to side 1", r.trace1.x, r.mortar, "linespoints",
+                        "pt 7 ps 1.2 lw 2 lc rgb '#1f77b4'"});
+  double lo = std::numeric_limits<double>::infinity();
+  for (const auto& s : fig.series) lo = std::min(lo, *std::min_element(s.y.begin(), s.y.end()));
+  const mortar::MergedGrid grid = mortar::merge_traces(r.trace1, r.trace2);
+  fig.series.push_back(grid_row(r.trace1.x, lo - 0.15, "nodes xi^1 (side 1, non-mortar)", "pt 2 ps 1.5 lc rgb '#1f77b4'"));
+  fig.series.push_back(grid_row(r.trace2.x, lo - 0.25, "nodes xi^2 (side 2, mortar)", "pt 2 ps 1.5 lc rgb '#888888'"));
+  fig.series.push_back(grid_row(grid.breakpoints, lo - 0.35, "merged grid", "pt 1 ps 1.5 lc rgb '#2ca02c'"));
+  mortar::write_figure(folder, "transfers", fig, run);
+}
+
+void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& table,
+                     const std::string& case_label, double l2_rate, double h1_rate, bool run) {
+  Figure fig;
+  fig.title = "trace transfer errors against h1, " + case_label;
+  fig.xlabel = "h1, side-1 element length [m]";
+  fig.ylabel = "relative error on side 1 [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "bottom right";
+  const auto h = table.column("h1");
+  fig.series.push_back({"mortar, H^1 seminorm", h, table.column("err_mortar_h1"), "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"});
+  fig.series.push_back({"pointwise, H^1 seminorm", h, table.column("err_pointwise_h1"), "linespoints", "pt 6 lw 2 dt 2 lc rgb '#d62728'"});
+  fig.series.push_back({"mortar, L^2", h, table.column("err_mortar_l2"), "linespoints", "pt 5 lw 2 lc rgb '#17becf'"});
+  fig.series.push_back({"pointwise, L^2", h, table.column("err_pointwise_l2"), "linespoints", "pt 4 lw 2 dt 2 lc rgb '#ff7f0e'"});
+  fig.slopes.push_back({h1_rate, 0, 0.5, ""});
+  fig.slopes.push_back({l2_rate, 2, 0.5, ""});
+  mortar::write_figure(folder, "error_vs_h", fig, run);
+}
+
+void plot_error_vs_time(const std::string& folder, const mortar::ConvergenceTable& table,
+                        const std::string& case_label, bool run) {
+  Figure fig;
+  fig.title = "mortar projection: L^2 error against wall time, " + case_label;
+  fig.xlabel = "wall time, best of 5 [s]";
+  fig.ylabel = "relative L^2 error on side 1 [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "top right";
+  const auto e = table.column("err_mortar_l2");
+  fig.series.push_back({"mortar projection (merge, D and M, solve)", table.column("time_s"), e, "linespoints", "pt 7 lw 2"});
+  fig.series.push_back({"limit: mass matrix of side 1, Cholesky, solve", table.column("limit_s"), e, "linespoints", "pt 4 dt 3"});
+  mortar::write_figure(folder, "error_vs_time", fig, run);
+}
+
+void plot_integral_errors(const std::string& folder, const std::vector<IntegralCurve>& curves,
+                          bool run) {
+  Figure fig;
+  fig.title = "conservation of int w across Gamma_c (values below 1e-17 drawn at 1e-17)";
+  fig.xlabel = "h1, side-1 element length [m]";
+  fig.ylabel = "|int w1 - int w2| / |int w2| [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "outside right center";
+  fig.width = 1200;
+  auto clamp = [](std::vector<double> v) {
+    for (double& x : v) x = std::max(x, floor_value);
+    return v;
+  };
+  int k = 0;
+  for (const auto& c : curves)
+    fig.series.push_back({"pointwise, " + c.label, c.h1, clamp(c.pointwise), "linespoints",
+                          "pt " + std::to_string(++k) + " lw 1 dt 2"});
+  // The mortar curves all sit at round-off: draw their worst case over every ratio.
+  Series worst{"mortar, worst over all ratios", curves.front().h1, {}, "linespoints",
+               "pt 7 ps 1.5 lw 3 lc rgb '#1f77b4'"};
+  for (std::size_t i = 0; i < worst.x.size(); ++i) {
+    double m = 0;
+    for (const auto& c : curves) m = std::max(m, c.mortar[i]);
+    worst.y.push_back(m);
+  }
+  worst.y = clamp(worst.y);
+  fig.series.push_back(worst);
+  mortar::write_figure(folder, "integral_error", fig, run);
+}
+
+}  // namespace chapter01

@@ -1,0 +1,178 @@
+// Chapter 1: interface traces on two nonmatching 1D grids.
+//
+// Gamma_c = (0, L) carries two grids: xi^1 of the non-mortar side 1 and xi^2 of the mortar
+// side 2. A trace w is known on side 2 through its nodal interpolant w2, and is carried to
+// side 1 in the two ways the paper glues the bodies: pointwise (w1(a) = w2(a) at the nodes of
+// xi^1, space V_h^P) and by the mortar projection (int (w1 - w2) psi = 0 for every psi in
+// M_h^1, space V_h^I). The program measures both against the exact w as h shrinks, and checks
+// which one keeps int w: the mortar projection does, to round-off, for any pair of grids.
+//
+//   ch01_interface_traces                            # smooth trace, h2/h1 = 3/2
+//   ch01_interface_traces --trace rough --h-ratio 1/3
+//   ch01_interface_traces --jitter 0.3 --levels 9
+#include <cstdio>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "common/convergence_study.hpp"
+#include "common/options.hpp"
+#include "figures.hpp"
+#include "trace_functions.hpp"
+#include "transfer_case.hpp"
+
+namespace {
+
+struct Options {
+  int n0 = 12;
+  int levels = 7;
+  double h_ratio = 1.5;
+  std::string trace = "smooth";
+  double L = 1.0;
+  double jitter = 0.0;
+  std::string out = "results/ch01_interface_traces";
+  bool quick = false;
+  bool no_plot = false;
+};
+
+constexpr long long max_elements = 1 << 20;
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
+  using mortar::Range;
+  parser.add_int("n0", o.n0, "side-1 elements on the coarsest level", Range::closed(1, max_elements));
+  parser.add_int("levels", o.levels, "number of refinement levels (h halves each time)", Range::closed(1, 20));
+  parser.add_double("h-ratio", o.h_ratio, "mesh ratio r = h2 / h1 (side 2 gets round(n1 / r) elements)",
+                    Range{0, 1000, true, false});
+  parser.add_choice("trace", o.trace, {"smooth", "rough"}, "trace for the convergence table");
+  parser.add_double("L", o.L, "length of Gamma_c [m]", Range::positive());
+  parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.5));
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("quick", o.quick, "small sizes for tests (levels = 4)");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.parse(argc, argv);
+  if (o.quick) o.levels = 4;
+  if (static_cast<long long>(o.n0) << (o.levels - 1) > max_elements)
+    parser.fail("levels", "the finest level would have more than " + std::to_string(max_elements) +
+                              " elements");
+  mortar::prepare_output_folder(parser, o.out);
+}
+
+mortar::Row table_row(const chapter01::TransferResult& r) {
+  return {{"h", r.trace1.max_element_length()},
+          {"h1", r.trace1.max_element_length()},
+          {"h2", r.trace2.max_element_length()},
+          {"n1", r.trace1.num_elements()},
+          {"n2", r.trace2.num_elements()},
+          {"dofs", r.trace1.num_nodes()},
+          {"time_s", r.time_s},
+          {"limit_s", r.limit_s},
+          {"err_mortar_l2", r.mortar_errors.l2},
+          {"err_mortar_h1", r.mortar_errors.h1},
+          {"err_pointwise_l2", r.pointwise_errors.l2},
+          {"err_pointwise_h1", r.pointwise_errors.h1},
+          {"mortar_integral_rel_error", r.mortar_errors.integral_rel_error},
+          {"pointwise_integral_rel_error", r.pointwise_errors.integral_rel_error}};
+}
+
+// Every trace, every ratio from 1/10 to 10, every level: the worst integral errors, and the
+// rows of cases.csv.
+struct Sweep {
+  double worst_mortar = 0, worst_pointwise = 0;
+  std::vector<chapter01::IntegralCurve> smooth_curves;
+};
+
+Sweep sweep_ratios(const Options& o) {
+  const std::vector<std::pair<std::string, double>> ratios = {
+      {"1/10", 0.1}, {"1/3", 1.0 / 3}, {"2/3", 2.0 / 3}, {"1", 1.0}, {"3/2", 1.5}, {"3", 3.0}, {"10", 10.0}};
+  Sweep s;
+  std::ofstream csv(o.out + "/cases.csv");
+  csv << "trace,h_ratio,level,n1,n2,h1,h2,err_mortar_l2,err_pointwise_l2,err_mortar_h1,"
+         "err_pointwise_h1,mortar_integral_rel_error,pointwise_integral_rel_error\n";
+  for (const std::string trace : {"smooth", "rough"}) {
+    const chapter01::TraceFunction w = chapter01::trace_function(trace, o.L);
+    for (const auto& [label, ratio] : ratios) {
+      // With h2/h1 = 3 every node of xi^2 is a node of xi^1 (nested grids): pointwise
+      // transfer is then exact and keeps int w too. The other ratios are not nested.
+      chapter01::IntegralCurve curve{"h2/h1 = " + label + (label == "3" ? " (nested grids)" : ""), {}, {}, {}};
+      for (int level = 0; level < o.levels; ++level) {
+        const int n1 = o.n0 << level;
+        const auto r = chapter01::run_transfer_case({n1, chapter01::side2_elements(n1, ratio), o.jitter}, w);
+        csv << trace << "," << label << "," << level << "," << n1 << "," << r.trace2.num_elements()
+            << "," << r.trace1.max_element_length() << "," << r.trace2.max_element_length() << ","
+            << r.mortar_errors.l2 << "," << r.pointwise_errors.l2 << "," << r.mortar_errors.h1
+            << "," << r.pointwise_errors.h1 << "," << r.mortar_errors.integral_rel_error << ","
+            << r.pointwise_errors.integral_rel_error << "\n";
+        s.worst_mortar = std::max(s.worst_mortar, r.mortar_errors.integral_rel_error);
+        s.worst_pointwise = std::max(s.worst_pointwise, r.pointwise_errors.integral_rel_error);
+        curve.h1.push_back(r.trace1.max_element_length());
+        curve.pointwise.push_back(r.pointwise_errors.integral_rel_error);
+        curve.mortar.push_back(r.mortar_errors.integral_rel_error);
+      }
+      if (trace == "smooth" && ratio != 1.0) s.smooth_curves.push_back(curve);
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // 1. Options, checked before any work starts.
+  Options o;
+  mortar::OptionParser parser("ch01_interface_traces",
+                              "Pointwise transfer against mortar projection of a trace between "
+                              "two nonmatching 1D grids on Gamma_c.");
+  parse_options(parser, o, argc, argv);
+  try {
+    // 2. The convergence table of the chosen trace and mesh ratio.
+    const chapter01::TraceFunction w = chapter01::trace_function(o.trace, o.L);
+    mortar::ConvergenceTable table;
+    chapter01::TransferResult finest;
+    for (int level = 0; level < o.levels; ++level) {
+      const int n1 = o.n0 << level;
+      finest = chapter01::run_transfer_case({n1, chapter01::side2_elements(n1, o.h_ratio), o.jitter}, w);
+      table.add(table_row(finest));
+    }
+
+    // 3. The sweep over traces and mesh ratios 1/10 .. 10: conservation of int w.
+    const Sweep sweep = sweep_ratios(o);
+
+    // 4. convergence.csv and summary.json.
+    const auto rates = table.rates();
+    mortar::JsonObject results;
+    results.set("h1", finest.trace1.max_element_length())
+        .set("h2", finest.trace2.max_element_length())
+        .set("time_s", finest.time_s)
+        .set("limit_s", finest.limit_s)
+        .set("limit_ratio", finest.time_s / finest.limit_s)
+        .set("err_mortar_l2", finest.mortar_errors.l2)
+        .set("err_pointwise_l2", finest.pointwise_errors.l2)
+        .set("mortar_integral_rel_error", sweep.worst_mortar)
+        .set("pointwise_integral_rel_error", sweep.worst_pointwise);
+    table.write_csv(o.out + "/convergence.csv");
+    mortar::write_summary(o.out + "/summary.json", parser, rates, results);
+    const bool smooth = o.trace == "smooth";
+    std::printf("rates (three finest levels): mortar L2 %.3f, H1 %.3f; pointwise L2 %.3f, H1 %.3f "
+                "(interpolation theory for a %s trace: L2 %s, H1 %s)\n",
+                rates.at("err_mortar_l2"), rates.at("err_mortar_h1"), rates.at("err_pointwise_l2"),
+                rates.at("err_pointwise_h1"), o.trace.c_str(), smooth ? "2" : "3/2", smooth ? "1" : "1/2");
+    std::printf("worst |int w1 - int w2| / |int w2| over all cases: mortar %.2e, pointwise %.2e\n",
+                sweep.worst_mortar, sweep.worst_pointwise);
+
+    // 5. Figures.
+    char label[96];
+    std::snprintf(label, sizeof label, "%s trace, h2/h1 = %g", o.trace.c_str(), o.h_ratio);
+    chapter01::plot_transfers(o.out,
+                              chapter01::run_transfer_case({4, 13, 0.0}, chapter01::trace_function("rough", o.L)),
+                              chapter01::trace_function("rough", o.L), !o.no_plot);
+    chapter01::plot_error_vs_h(o.out, table, label, smooth ? 2.0 : 1.5, smooth ? 1.0 : 0.5, !o.no_plot);
+    chapter01::plot_error_vs_time(o.out, table, label, !o.no_plot);
+    chapter01::plot_integral_errors(o.out, sweep.smooth_curves, !o.no_plot);
+    std::printf("wrote %s\n", o.out.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ch01_interface_traces: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

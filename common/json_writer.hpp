@@ -1,0 +1,31 @@
+// A minimal JSON object writer for summary.json: ordered keys, numbers, strings, booleans
+// and nested objects. Non-finite numbers are written as null (JSON has no NaN).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace mortar {
+
+class JsonObject {
+ public:
+  JsonObject& set(const std::string& key, double value);
+  JsonObject& set(const std::string& key, int value) { return set(key, static_cast<double>(value)); }
+  JsonObject& set(const std::string& key, const std::string& value);
+  JsonObject& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
+  JsonObject& set(const std::string& key, bool value);
+  JsonObject& set(const std::string& key, const JsonObject& value);
+
+  std::string dump(int indent = 0) const;
+  bool empty() const { return entries_.empty(); }
+
+ private:
+  using Value = std::variant<double, std::string, bool, std::shared_ptr<JsonObject>>;
+  std::vector<std::pair<std::string, Value>> entries_;
+  JsonObject& put(const std::string& key, Value v);
+};
+
+}  // namespace mortar

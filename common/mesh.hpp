@@ -1,0 +1,47 @@
+// Structured triangle meshes of rectangles, with boundary tags, optional jitter and grading.
+//
+// An nx x ny grid of cells, each split along its (i,j)-(i+1,j+1) diagonal into two
+// counter-clockwise triangles. Nodes on each side are kept in order along that side, so the
+// trace of a body on the contact line Gamma_c is read off directly (interface_trace).
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+namespace mortar {
+
+enum class Side { bottom = 0, right = 1, top = 2, left = 3 };
+const char* side_name(Side side);
+
+struct RectangleSpec {
+  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  int nx = 1, ny = 1;
+  // Interior nodes move by up to jitter * h / 2 in each direction; nodes on a side (not the
+  // corners) move along that side only, so traces on Gamma_c become nonuniform too.
+  double jitter = 0;
+  // Node rows at y0 + (y1 - y0) * t^grading (t uniform in [0,1]): grading > 1 clusters the
+  // rows towards y0 (grade_towards = Side::bottom) or, mirrored, towards y1 (Side::top).
+  double grading = 1;
+  Side grade_towards = Side::bottom;
+  unsigned seed = 1;  // jitter is pseudo-random but reproducible
+};
+
+struct Mesh {
+  std::vector<Eigen::Vector2d> nodes;
+  std::vector<std::array<int, 3>> triangles;
+  std::array<std::vector<int>, 4> side_nodes;  // indexed by Side, ordered by increasing x or y
+
+  const std::vector<int>& nodes_on(Side side) const { return side_nodes[static_cast<int>(side)]; }
+  int num_nodes() const { return static_cast<int>(nodes.size()); }
+  int num_dofs() const { return 2 * num_nodes(); }
+  double area(int triangle) const;
+  double max_edge_length() const;  // the "h" reported in convergence tables
+};
+
+Mesh rectangle_mesh(const RectangleSpec& spec);
+
+// Displaces a mesh by a nodal field u (2 dofs per node: 2 a + component) times a scale.
+Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u, double scale);
+
+}  // namespace mortar

@@ -1,0 +1,124 @@
+#include "common/plot.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace mortar {
+
+namespace {
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else out += c;
+  }
+  return out;
+}
+
+void write_data(const std::string& path, const Figure& fig) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f.precision(12);
+  f << "# " << fig.title << "\n# columns: " << fig.xlabel << ", " << fig.ylabel
+    << "\n# one block per series (gnuplot 'index')\n";
+  for (std::size_t s = 0; s < fig.series.size(); ++s) {
+    f << "# series " << s << ": " << fig.series[s].title << "\n";
+    const auto& x = fig.series[s].x;
+    const auto& y = fig.series[s].y;
+    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+      if (std::isnan(x[i])) f << "\n";
+      else f << x[i] << " " << y[i] << "\n";
+    }
+    f << "\n\n";
+  }
+}
+
+// C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
+std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size_t k) {
+  if (r.anchor < 0 || r.anchor >= static_cast<int>(fig.series.size()))
+    throw std::invalid_argument("reference slope anchored to a missing series");
+  const auto& s = fig.series[r.anchor];
+  double x0 = std::numeric_limits<double>::infinity(), y0 = 0;
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    if (s.x[i] > 0 && s.x[i] < x0 && s.y[i] > 0) {
+      x0 = s.x[i];
+      y0 = s.y[i];
+    }
+  if (!std::isfinite(x0)) throw std::invalid_argument("reference slope: anchor series has no positive point");
+  std::ostringstream f;
+  f.precision(12);
+  f << "ref" << k << "(x) = " << (1 - r.offset) * y0 / std::pow(x0, r.slope) << " * x**("
+    << r.slope << ")\n";
+  return f.str();
+}
+}  // namespace
+
+void write_figure(const std::string& folder, const std::string& name, const Figure& fig,
+                  bool run_gnuplot) {
+  namespace fs = std::filesystem;
+  write_data((fs::path(folder) / (name + ".dat")).string(), fig);
+
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size " << fig.width << "," << fig.height
+     << " enhanced font 'DejaVu Sans,12'\n"
+     << "set output '" << name << ".png'\n"
+     << "set title '" << escape(fig.title) << "'\n"
+     << "set xlabel '" << escape(fig.xlabel) << "'\n"
+     << "set ylabel '" << escape(fig.ylabel) << "'\n"
+     << "set key " << fig.key << " box opaque\n"
+     << "set grid\n";
+  if (fig.log_x) gp << "set logscale x\nset format x '10^{%L}'\n";
+  if (fig.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
+  if (fig.equal_axes) gp << "set size ratio -1\n";
+  for (std::size_t k = 0; k < fig.slopes.size(); ++k) gp << slope_function(fig, fig.slopes[k], k);
+  gp << "plot ";
+  for (std::size_t s = 0; s < fig.series.size(); ++s) {
+    const Series& ser = fig.series[s];
+    gp << (s ? ", \\\n     " : "") << "'" << name << ".dat' index " << s << " using 1:2 with "
+       << ser.style << " " << ser.extra << " title '" << escape(ser.title) << "'";
+  }
+  for (std::size_t k = 0; k < fig.slopes.size(); ++k) {
+    const auto& r = fig.slopes[k];
+    std::ostringstream label;
+    label << (r.label.empty() ? "slope " : r.label);
+    if (r.label.empty()) label << r.slope;
+    gp << ", \\\n     ref" << k << "(x) with lines dt 2 lw 2 lc rgb '#555555' title '"
+       << escape(label.str()) << "'";
+  }
+  gp << "\n";
+  const fs::path script = fs::path(folder) / (name + ".gp");
+  {
+    std::ofstream f(script);
+    if (!f) throw std::runtime_error("cannot write " + script.string());
+    f << gp.str();
+  }
+  if (!run_gnuplot) return;
+  const std::string command = "cd '" + folder + "' && " MORTAR_GNUPLOT " '" + name + ".gp'";
+  if (std::system(command.c_str()) != 0)
+    throw std::runtime_error("gnuplot failed on " + script.string());
+}
+
+Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra) {
+  Series s;
+  s.title = title;
+  s.style = "lines";
+  s.extra = extra;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k <= 3; ++k) {
+      s.x.push_back(mesh.nodes[t[k % 3]].x());
+      s.y.push_back(mesh.nodes[t[k % 3]].y());
+    }
+    s.x.push_back(nan);
+    s.y.push_back(nan);
+  }
+  return s;
+}
+
+}  // namespace mortar

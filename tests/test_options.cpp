@@ -1,0 +1,80 @@
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "common/options.hpp"
+
+using namespace mortar;
+
+namespace {
+struct Demo {
+  int n = 3;
+  double nu = 0.3, r = 1;
+  std::string mode = "a";
+  bool flag = false;
+};
+
+void parse(Demo& d, std::vector<const char*> args) {
+  args.insert(args.begin(), "demo");
+  OptionParser p("demo", "a demo");
+  p.add_int("n", d.n, "count", Range::positive());
+  p.add_double("nu", d.nu, "ratio", Range::open(-1, 0.5));
+  p.add_double("h-ratio", d.r, "mesh ratio", Range::positive());
+  p.add_choice("mode", d.mode, {"a", "b"}, "mode");
+  p.add_flag("flag", d.flag, "flag");
+  p.parse(static_cast<int>(args.size()), args.data());
+}
+}  // namespace
+
+TEST(Options, parses_values_fractions_and_flags) {
+  Demo d;
+  parse(d, {"--n", "7", "--nu=0.25", "--h-ratio", "3/2", "--mode", "b", "--flag"});
+  EXPECT_EQ(d.n, 7);
+  EXPECT_DOUBLE_EQ(d.nu, 0.25);
+  EXPECT_DOUBLE_EQ(d.r, 1.5);
+  EXPECT_EQ(d.mode, "b");
+  EXPECT_TRUE(d.flag);
+}
+
+TEST(Options, parse_number_rejects_junk_nan_and_inf) {
+  double v = 0;
+  EXPECT_TRUE(parse_number("1e-3", v));
+  EXPECT_TRUE(parse_number("-2/8", v));
+  EXPECT_DOUBLE_EQ(v, -0.25);
+  for (const char* bad : {"", "abc", "1.5x", "nan", "inf", "-inf", "1/0", "1e400", "2/", "/3"})
+    EXPECT_FALSE(parse_number(bad, v)) << bad;
+}
+
+using OptionsDeathTest = ::testing::Test;
+
+TEST_F(OptionsDeathTest, each_bad_input_exits_2_naming_the_option) {
+  const std::vector<std::pair<std::vector<const char*>, std::string>> cases = {
+      {{"--bogus"}, "--bogus: unknown option"},
+      {{"--n", "0"}, "--n: must be > 0"},
+      {{"--n", "-4"}, "--n: must be > 0"},
+      {{"--n", "2.5"}, "--n: expects an integer"},
+      {{"--n", "ten"}, "--n: expects an integer"},
+      {{"--nu", "0.5"}, "--nu: must be in (-1, 0.5)"},
+      {{"--nu", "nan"}, "--nu: expects a finite number"},
+      {{"--h-ratio", "-1"}, "--h-ratio: must be > 0"},
+      {{"--mode", "c"}, "--mode: expects one of a|b"},
+      {{"--n"}, "--n: missing value"},
+      {{"--flag=1"}, "--flag: is a flag"},
+      {{"n"}, "unexpected argument 'n'"},
+  };
+  for (const auto& [args, message] : cases) {
+    Demo d;
+    EXPECT_EXIT(parse(d, args), ::testing::ExitedWithCode(2), ::testing::HasSubstr(message))
+        << "input " << args.front();
+  }
+}
+
+TEST_F(OptionsDeathTest, help_lists_every_option_with_its_default_and_exits_0) {
+  Demo d;
+  EXPECT_EXIT({
+    parse(d, {"--help"});
+  }, ::testing::ExitedWithCode(0), "");
+  OptionParser p("demo", "a demo");
+  p.add_double("nu", d.nu, "ratio", Range::open(-1, 0.5));
+  EXPECT_NE(p.usage().find("--nu VALUE"), std::string::npos);
+  EXPECT_NE(p.usage().find("[default: 0.3]"), std::string::npos);
+}
