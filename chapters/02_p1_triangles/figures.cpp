@@ -54,7 +54,7 @@ void plot_deformed_mesh(const std::string& folder, const mortar::Mesh& mesh,
   fig.xlabel = "x [m]";
   fig.ylabel = "y [m]";
   fig.equal_axes = true;
-  fig.key = "outside bottom center horizontal";
+  fig.key = "outside top center horizontal";
   fig.width = fig.height = 800;
   fig.series.push_back(mortar::mesh_edges(mesh, "reference configuration", "lc rgb '#bbbbbb'"));
   fig.series.push_back(mortar::mesh_edges(mortar::displaced(mesh, u, scale),

@@ -19,7 +19,7 @@ struct LevelSetup {
 struct LevelResult {
   mortar::Mesh mesh;
   Eigen::VectorXd u;          // nodal displacements, 2 per node
-  int dofs = 0;               // free unknowns of the solved system
+  int dofs = 0;               // all nodal dofs, Dirichlet ones included (2 per node)
   double time_s = 0;          // assembly + loads + elimination + factorization + solve
   double limit_s = 0;         // assembly + Cholesky factorization + solve of K alone
   mortar::ErrorNorms norms;

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   try {
     // 2. Material and exact solution.
     const mortar::Material material(o.E, o.nu);
-    const chapter02::ManufacturedSolution exact(material, 0.05);
+    const chapter02::ManufacturedSolution exact(material, 0.01);
     chapter02::LevelSetup setup;
     setup.jitter = o.jitter;
     setup.backend = o.spd_solver == "cholmod" ? mortar::SpdBackend::cholmod
