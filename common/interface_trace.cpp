@@ -52,8 +52,8 @@ InterfaceTrace uniform_trace(double L, int n, double jitter, unsigned seed) {
   if (!(L > 0) || n < 1)
     throw std::invalid_argument("uniform_trace: need L > 0 and n >= 1, got L = " +
                                 std::to_string(L) + ", n = " + std::to_string(n));
-  if (!(jitter >= 0 && jitter <= 0.5))
-    throw std::invalid_argument("uniform_trace: jitter must be in [0, 0.5], got " +
+  if (!(jitter >= 0 && jitter <= 0.4))
+    throw std::invalid_argument("uniform_trace: jitter must be in [0, 0.4], got " +
                                 std::to_string(jitter));
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> shift(-0.5 * jitter, 0.5 * jitter);

@@ -25,7 +25,8 @@ struct InterfaceTrace {
 // Trace of a 2D mesh on one of its sides; x is the coordinate along Gamma_c (horizontal).
 InterfaceTrace trace_on_side(const Mesh& mesh, Side side);
 
-// A bare 1D grid of n elements on [0, L], with interior nodes moved by up to jitter * h / 2.
+// A bare 1D grid of n elements on [0, L], with interior nodes moved by up to jitter * h / 2
+// (jitter in [0, 0.4]).
 InterfaceTrace uniform_trace(double L, int n, double jitter = 0, unsigned seed = 1);
 
 }  // namespace mortar

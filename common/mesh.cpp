@@ -40,8 +40,10 @@ void check_spec(const RectangleSpec& s) {
   if (s.nx < 1 || s.ny < 1)
     throw std::invalid_argument("rectangle_mesh: need nx, ny >= 1, got " + std::to_string(s.nx) +
                                 " x " + std::to_string(s.ny));
-  if (!(s.jitter >= 0 && s.jitter <= 0.5))
-    throw std::invalid_argument("rectangle_mesh: jitter must be in [0, 0.5], got " +
+  // Each vertex moves by up to jitter * h / 2 per direction; a triangle keeps at least
+  // (1 - 2 jitter) of its area, so 0.4 keeps 20% and the family stays shape-regular.
+  if (!(s.jitter >= 0 && s.jitter <= 0.4))
+    throw std::invalid_argument("rectangle_mesh: jitter must be in [0, 0.4], got " +
                                 std::to_string(s.jitter));
   if (!(s.grading >= 1 && s.grading <= 10))
     throw std::invalid_argument("rectangle_mesh: grading must be in [1, 10], got " +

@@ -17,8 +17,9 @@ const char* side_name(Side side);
 struct RectangleSpec {
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
   int nx = 1, ny = 1;
-  // Interior nodes move by up to jitter * h / 2 in each direction; nodes on a side (not the
-  // corners) move along that side only, so traces on Gamma_c become nonuniform too.
+  // Interior nodes move by up to jitter * h / 2 in each direction (jitter in [0, 0.4]); nodes
+  // on a side (not the corners) move along that side only, so traces on Gamma_c become
+  // nonuniform too.
   double jitter = 0;
   // Node rows at y0 + (y1 - y0) * t^grading (t uniform in [0,1]): grading > 1 clusters the
   // rows towards y0 (grade_towards = Side::bottom) or, mirrored, towards y1 (Side::top).

@@ -23,7 +23,8 @@ std::string format_number(double v) {
 }
 
 bool parse_plain(const std::string& text, double& value) {
-  if (text.empty()) return false;
+  // plain decimal only: strtod would also take hexadecimal ("0x10") and "infinity"
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) return false;
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
@@ -172,7 +173,7 @@ void OptionParser::parse(int argc, const char* const* argv) {
     if (o->is_flag) {
       if (inline_value) fail(name, "is a flag and takes no value");
     } else if (!inline_value) {
-      if (i + 1 >= argc) fail(name, "missing value");
+      if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0) fail(name, "missing value");
       value = argv[++i];
     }
     const std::string error = o->set(value);

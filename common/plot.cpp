@@ -9,6 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace mortar {
 
 namespace {
@@ -37,6 +40,21 @@ void write_data(const std::string& path, const Figure& fig) {
     }
     f << "\n\n";
   }
+}
+
+// Runs "gnuplot script" inside folder (the script names its files relative to it), without a
+// shell, so no folder name needs quoting.
+bool run_in_folder(const std::string& folder, const std::string& script) {
+  const pid_t pid = fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    if (chdir(folder.c_str()) != 0) _exit(127);
+    execlp(MORTAR_GNUPLOT, MORTAR_GNUPLOT, script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 // C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
@@ -98,10 +116,12 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
     if (!f) throw std::runtime_error("cannot write " + script.string());
     f << gp.str();
   }
+  const fs::path png = fs::path(folder) / (name + ".png");
+  std::error_code ignored;
+  fs::remove(png, ignored);  // never leave a figure from an earlier run beside new data
   if (!run_gnuplot) return;
-  const std::string command = "cd '" + folder + "' && " MORTAR_GNUPLOT " '" + name + ".gp'";
-  if (std::system(command.c_str()) != 0)
-    throw std::runtime_error("gnuplot failed on " + script.string());
+  if (!run_in_folder(folder, name + ".gp"))
+    throw std::runtime_error("gnuplot (" MORTAR_GNUPLOT ") failed on " + script.string());
 }
 
 Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra) {

@@ -1,5 +1,6 @@
 // Quadrature rules: Gauss-Legendre on segments (GSL's glfixed tables) and a collapsed
-// (Duffy/Stroud conical product) Gauss-Legendre rule on triangles.
+// (Duffy) Gauss-Legendre rule on triangles. (Stroud's conical product rule uses Gauss-Jacobi
+// points in the collapsed direction and gains one degree; GSL has Legendre tables only.)
 #pragma once
 
 #include <Eigen/Dense>
@@ -14,7 +15,7 @@ struct SegmentRule {
 };
 SegmentRule gauss_legendre(int n);
 
-// Rule on a triangle in barycentric-free form: points (s, t) in the reference triangle
+// Rule on a triangle: points (s, t) in the reference triangle
 // {s, t >= 0, s + t <= 1}, weights summing to 1, so that
 //   int_T f = area(T) * sum_q w_q f(x0 + s_q (x1 - x0) + t_q (x2 - x0)).
 // Built from n x n Gauss-Legendre points mapped by (a, b) -> (a, b (1 - a)), whose Jacobian

@@ -23,7 +23,10 @@ std::vector<double> mortar_projection(const InterfaceTrace& t1, const InterfaceT
   w1.front() = w2.front();  // a1 and a2 are common nodes
   w1.back() = w2.back();
   const int interior = n1 - 2;
-  if (interior == 0) return w1;
+  if (interior == 0)
+    throw std::invalid_argument(
+        "mortar_projection: side 1 has a single element, so both of its nodes are end nodes and "
+        "nothing is left to keep int w; use at least 2 elements");
 
   // D_int w1_int = M w2 - D_ends w1_ends, a square (N-1) x (N-1) banded system.
   const Eigen::Map<const Eigen::VectorXd> w2v(w2.data(), n2);

@@ -1,9 +1,13 @@
 // Two ways to carry a trace w2 of side 2 over to side 1's grid (chapter 1):
 //  - pointwise transfer: w1(a) = w2(a) at every node a of xi^1 (the V_h^P way);
 //  - mortar projection: D w1 = M w2, i.e. int (w1 - w2) psi = 0 for all psi in M_h^1
-//    (the V_h^I way). M_h^1 has no function for the end nodes a1, a2; these are common nodes
-//    of both grids, so w1 takes side 2's values there and D's interior block gives the rest.
+//    (the V_h^I way). D has N - 1 rows for N + 1 unknowns, so two values must come from
+//    elsewhere. As a transfer operator we take them from side 2 at the end points a1, a2
+//    (nodes of both grids); this is our choice for chapter 1: in the contact problem the
+//    non-mortar end values are free unknowns, fixed by the elasticity equations instead.
+//    D's interior block is then square and gives the interior values.
 // Since sum_i psi_i = 1, the projection keeps int w exactly; the pointwise transfer does not.
+// It needs N >= 2 side-1 elements (with N = 1 there are no interior values to adjust).
 #pragma once
 
 #include <vector>

@@ -40,7 +40,7 @@ TEST(Options, parse_number_rejects_junk_nan_and_inf) {
   EXPECT_TRUE(parse_number("1e-3", v));
   EXPECT_TRUE(parse_number("-2/8", v));
   EXPECT_DOUBLE_EQ(v, -0.25);
-  for (const char* bad : {"", "abc", "1.5x", "nan", "inf", "-inf", "1/0", "1e400", "2/", "/3"})
+  for (const char* bad : {"", "abc", "1.5x", "nan", "inf", "-inf", "1/0", "1e400", "2/", "/3", "0x10", "infinity"})
     EXPECT_FALSE(parse_number(bad, v)) << bad;
 }
 
@@ -58,6 +58,7 @@ TEST_F(OptionsDeathTest, each_bad_input_exits_2_naming_the_option) {
       {{"--h-ratio", "-1"}, "--h-ratio: must be > 0"},
       {{"--mode", "c"}, "--mode: expects one of a|b"},
       {{"--n"}, "--n: missing value"},
+      {{"--mode", "--flag"}, "--mode: missing value"},
       {{"--flag=1"}, "--flag: is a flag"},
       {{"n"}, "unexpected argument 'n'"},
   };

@@ -72,6 +72,13 @@ TEST(Programs, ch01_refuses_bad_input_with_status_2) {
   expect_refused(CH01, "--levels 99", "levels");
   expect_refused(CH01, "--trace wiggly", "trace");
   expect_refused(CH01, "--levels", "levels");
+  expect_refused(CH01, "--levels 2", "levels");
+  expect_refused(CH01, "--n0 1", "n0");
+  expect_refused(CH01, "--h-ratio 1000", "h-ratio");
+  expect_refused(CH01, "--h-ratio 1e-9", "h-ratio");
+  expect_refused(CH01, "--L 1e-160", "L");
+  expect_refused(CH01, "--jitter 0.5", "jitter");
+  expect_refused(CH01, "--trace --quick", "trace");
 }
 
 TEST(Programs, ch02_refuses_bad_input_with_status_2) {
@@ -89,6 +96,9 @@ TEST(Programs, ch02_refuses_bad_input_with_status_2) {
   expect_refused(CH02, "--n0 1024 --levels 5", "levels");
   expect_refused(CH02, "--jitter 0.9", "jitter");
   expect_refused(CH02, "--out /proc/forbidden", "out");
+  expect_refused(CH02, "--out --quick", "out");
+  expect_refused(CH02, "--E 0x10", "E");
+  expect_refused(CH02, "--levels 1", "levels");
 }
 
 TEST(Programs, ch01_mortar_conserves_the_integral_and_pointwise_does_not) {

@@ -67,3 +67,10 @@ TEST(TraceTransfer, pointwise_transfer_does_not_conserve_the_integral) {
   EXPECT_GT(std::fabs(integral(t1, w1) - integral(t2, w2)), 1e-3);
   for (int i = 0; i < t1.num_nodes(); ++i) EXPECT_DOUBLE_EQ(w1[i], t2.evaluate(w2, t1.x[i]));
 }
+
+TEST(TraceTransfer, mortar_projection_refuses_a_single_side1_element) {
+  // Both nodes of a single element are end nodes: nothing is left to keep int w.
+  const InterfaceTrace t1 = uniform_trace(1.0, 1), t2 = uniform_trace(1.0, 5);
+  const std::vector<double> w2 = {0, 1, 0, 1, 0, 1};
+  EXPECT_THROW(mortar_projection(t1, t2, build(t1, t2), w2), std::invalid_argument);
+}

@@ -102,8 +102,9 @@ void plot_integral_errors(const std::string& folder, const std::vector<IntegralC
   fig.xlabel = "h1, side-1 element length [m]";
   fig.ylabel = "|int w1 - int w2| / |int w2| [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "outside right center";
-  fig.width = 1200;
+  fig.key = "right center";  // the band between the two families of curves is empty
+  fig.width = 1100;
+  fig.height = 800;
   auto clamp = [](std::vector<double> v) {
     for (double& x : v) x = std::max(x, floor_value);
     return v;

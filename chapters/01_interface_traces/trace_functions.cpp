@@ -7,24 +7,37 @@ namespace chapter01 {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
-}
-
-double TraceFunction::kink() const { return name == "rough" ? (std::sqrt(2.0) - 1) * L : -1.0; }
+constexpr int rough_kinks = 24;
+}  // namespace
 
 double TraceFunction::value(double x) const {
-  if (name == "rough") return 1 + std::fabs(x - kink()) / L;
-  return 1 + x / L + 0.5 * std::sin(2.5 * pi * x / L);
+  if (kinks.empty()) return 1 + x / L + 0.5 * std::sin(2.5 * pi * x / L);
+  double sum = 0;
+  for (double k : kinks) sum += std::fabs(x - k);
+  return 1 + sum / (kinks.size() * L);
 }
 
 double TraceFunction::derivative(double x) const {
-  if (name == "rough") return (x < kink() ? -1.0 : 1.0) / L;
-  return 1 / L + 1.25 * pi / L * std::cos(2.5 * pi * x / L);
+  if (kinks.empty()) return 1 / L + 1.25 * pi / L * std::cos(2.5 * pi * x / L);
+  double sum = 0;
+  for (double k : kinks) sum += x < k ? -1.0 : 1.0;
+  return sum / (kinks.size() * L);
 }
 
 TraceFunction trace_function(const std::string& name, double L) {
-  if (name != "smooth" && name != "rough")
-    throw std::invalid_argument("unknown trace '" + name + "' (smooth or rough)");
-  return TraceFunction{name, L};
+  TraceFunction w{name, L, {}};
+  if (name == "kink") {
+    w.kinks = {(std::sqrt(2.0) - 1) * L};
+  } else if (name == "rough") {
+    const double golden = (std::sqrt(5.0) - 1) / 2;
+    for (int j = 0; j < rough_kinks; ++j) {
+      const double t = 0.5 + j * golden;
+      w.kinks.push_back((t - std::floor(t)) * L);
+    }
+  } else if (name != "smooth") {
+    throw std::invalid_argument("unknown trace '" + name + "' (smooth, kink or rough)");
+  }
+  return w;
 }
 
 }  // namespace chapter01

@@ -31,6 +31,10 @@ struct TransferResult {
 // Side 2 has n2 = round(n1 / r) elements for a mesh ratio r = h2 / h1 (at least one).
 int side2_elements(int n1, double ratio);
 
+// True when every node of `coarse` is a node of `fine`: then pointwise transfer from coarse
+// to fine is exact, and the two transfers cannot be told apart.
+bool nested(const mortar::InterfaceTrace& coarse, const mortar::InterfaceTrace& fine);
+
 TransferResult run_transfer_case(const TransferCase& c, const TraceFunction& w);
 
 }  // namespace chapter01
