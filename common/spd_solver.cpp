@@ -3,6 +3,8 @@
 #include <Eigen/SparseCholesky>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #ifdef MORTAR_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -26,10 +28,62 @@ std::string backend_name(SpdBackend backend) {
   return backend == SpdBackend::cholmod ? "cholmod" : "simplicial_ldlt";
 }
 
+namespace {
+// A pivot that keeps less than this fraction of its matrix's diagonal entry has lost every
+// digit to cancellation: the matrix is singular to working precision (a floating body, say).
+// Pivots are compared with their own diagonal entry, not with the largest pivot, so stiffness
+// ratios of 1e6 between two bodies do not look singular.
+constexpr double singular_pivot_ratio = 1e-13;
+
+[[noreturn]] void report_singular(const std::string& backend, Eigen::Index dof, double ratio) {
+  throw std::runtime_error("SpdSolver (" + backend + "): K is singular to working precision: the "
+                           "pivot of unknown " + std::to_string(dof) + " keeps only " +
+                           std::to_string(ratio) + " of its diagonal entry. Is a body free to "
+                           "move rigidly (no Dirichlet data in some direction)?");
+}
+
+#ifdef MORTAR_HAVE_CHOLMOD
+// CHOLMOD's supernodal LL^T, with access to the factor's diagonal for the pivot check.
+class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
+ public:
+  // Smallest L_kk^2 / K_pp over all pivots k (p = Perm[k]) and the unknown where it occurs.
+  std::pair<double, Eigen::Index> worst_pivot(const Eigen::VectorXd& diagonal) const {
+    const cholmod_factor* L = m_cholmodFactor;
+    return L->itype == CHOLMOD_INT ? worst_pivot<int>(L, diagonal)
+                                   : worst_pivot<SuiteSparse_long>(L, diagonal);
+  }
+
+ private:
+  // Supernode s holds columns super[s] .. super[s+1]-1 of L as a dense column-major block of
+  // pi[s+1] - pi[s] rows starting at x[px[s]]; its diagonal entries are at (j, j).
+  template <typename Index>
+  static std::pair<double, Eigen::Index> worst_pivot(const cholmod_factor* L,
+                                                     const Eigen::VectorXd& diagonal) {
+    const auto* super = static_cast<const Index*>(L->super);
+    const auto* pi = static_cast<const Index*>(L->pi);
+    const auto* px = static_cast<const Index*>(L->px);
+    const auto* perm = static_cast<const Index*>(L->Perm);
+    const auto* x = static_cast<const double*>(L->x);
+    std::pair<double, Eigen::Index> worst{1.0, 0};
+    for (std::size_t s = 0; s < L->nsuper; ++s) {
+      const Index rows = pi[s + 1] - pi[s];
+      for (Index k = super[s]; k < super[s + 1]; ++k) {
+        const Index j = k - super[s];
+        const double l = x[px[s] + j * rows + j];
+        const double ratio = l * l / diagonal[perm[k]];
+        if (!(ratio >= worst.first)) worst = {ratio, perm[k]};
+      }
+    }
+    return worst;
+  }
+};
+#endif
+}  // namespace
+
 struct SpdSolver::Impl {
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
 #ifdef MORTAR_HAVE_CHOLMOD
-  Eigen::CholmodSupernodalLLT<SparseMatrix> cholmod;
+  CholmodLLT cholmod;
 #endif
   bool factorized = false;
   Eigen::Index size = 0;
@@ -49,20 +103,24 @@ void SpdSolver::factorize(const SparseMatrix& K) {
                                 std::to_string(K.cols()));
   impl_->factorized = false;
   impl_->size = K.rows();
+  const Eigen::VectorXd diagonal = K.diagonal();
+  if (!(diagonal.minCoeff() > 0))
+    throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" +
+                             std::to_string(diagonal.minCoeff()) + "): it is not positive definite");
   if (backend_ == SpdBackend::simplicial_ldlt) {
     impl_->ldlt.compute(K);
     if (impl_->ldlt.info() != Eigen::Success)
       throw std::runtime_error("SpdSolver (SimplicialLDLT): factorization of the " +
                                std::to_string(K.rows()) + " x " + std::to_string(K.rows()) +
                                " matrix failed");
-    // LDLT accepts semidefinite and indefinite matrices; K must be definite.
+    // LDLT also runs through indefinite and singular matrices: check every pivot, which
+    // for P K P^T = L D L^T sits at D[P(i)] for unknown i.
     const Eigen::VectorXd d = impl_->ldlt.vectorD();
-    const double scale = d.cwiseAbs().maxCoeff();
-    for (Eigen::Index i = 0; i < d.size(); ++i)
-      if (!(d[i] > 1e-12 * scale))
-        throw std::runtime_error("SpdSolver (SimplicialLDLT): K is not positive definite (pivot " +
-                                 std::to_string(i) + " is " + std::to_string(d[i]) +
-                                 "): is a body free to move rigidly?");
+    const auto& P = impl_->ldlt.permutationP().indices();
+    for (Eigen::Index i = 0; i < d.size(); ++i) {
+      const double ratio = d[P[i]] / diagonal[i];
+      if (!(ratio > singular_pivot_ratio)) report_singular("SimplicialLDLT", i, ratio);
+    }
   } else {
 #ifdef MORTAR_HAVE_CHOLMOD
     impl_->cholmod.compute(K);
@@ -70,6 +128,9 @@ void SpdSolver::factorize(const SparseMatrix& K) {
       throw std::runtime_error("SpdSolver (CHOLMOD): K is not positive definite (" +
                                std::to_string(K.rows()) +
                                " unknowns): is a body free to move rigidly?");
+    // A singular K can also come through with a pivot that is pure round-off.
+    const auto [ratio, dof] = impl_->cholmod.worst_pivot(diagonal);
+    if (!(ratio > singular_pivot_ratio)) report_singular("CHOLMOD", dof, ratio);
 #endif
   }
   impl_->factorized = true;
