@@ -1,0 +1,151 @@
+#include "common/bilateral_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/stopwatch.hpp"
+
+namespace mortar {
+
+namespace {
+constexpr long long max_dofs = 12'000'000;  // beyond this the machine runs out of memory
+
+long long estimated_dofs(const BilateralStudyOptions& o) {
+  const TwoBodyGeometry g = level_geometry(o, o.levels - 1);
+  return 2LL * (g.n1 + 1) * (g.m1 + 1) + 2LL * (g.n2 + 1) * (g.m2 + 1);
+}
+}  // namespace
+
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv) {
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
+  parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)",
+                    Range::closed(0.01, 100));
+  parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, which carries the multipliers (1 or 2)", Range::closed(1, 2));
+  parser.add_double("E1", o.E1, "Young's modulus of body 1 [Pa]", Range::positive());
+  parser.add_double("nu1", o.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
+  parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::positive());
+  parser.add_double("nu2", o.nu2, "Poisson ratio of body 2", Range::open(-1, 0.5));
+  parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H1", o.H1, "height of body 1 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("aspect", o.aspect, "cell width / cell height (20 for 1:20 cells)", Range::closed(0.05, 20));
+  parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
+  parser.add_choice("saddle-solver", o.saddle_solver, {"elimination", "lu"}, "saddle-point solver");
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3)");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.parse(argc, argv);
+  if (o.quick) {
+    o.n0 = 6;
+    o.levels = 3;
+  }
+  if ((static_cast<long long>(o.n0) << (o.levels - 1)) > (1 << 16) || estimated_dofs(o) > max_dofs)
+    parser.fail("levels", "the finest level would have about " + std::to_string(estimated_dofs(o)) +
+                              " dofs, more than " + std::to_string(max_dofs));
+  prepare_output_folder(parser, o.out);
+}
+
+TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level) {
+  TwoBodyGeometry g;
+  g.L = o.L;
+  g.H1 = o.H1;
+  g.H2 = o.H2;
+  g.jitter = o.jitter;
+  g.n1 = o.n0 << level;
+  g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
+  g.m1 = std::max(1, static_cast<int>(std::lround(o.aspect * g.n1 * o.H1 / o.L)));
+  g.m2 = std::max(1, static_cast<int>(std::lround(o.aspect * g.n2 * o.H2 / o.L)));
+  return g;
+}
+
+BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching) {
+  BilateralOptions b;
+  b.matching = matching;
+  b.nonmortar = o.nonmortar - 1;
+  b.solver = parse_saddle_solver(o.saddle_solver);
+  return b;
+}
+
+Row BilateralLevel::row() const {
+  return {{"h", std::max(h1, h2)},
+          {"h1", h1},
+          {"h2", h2},
+          {"dofs", static_cast<double>(bodies.num_dofs())},
+          {"multipliers", static_cast<double>(solution.lambda.size())},
+          {"time_s", time_s},
+          {"limit_s", limit_s},
+          {"err_energy", err_energy},
+          {"err_l2", err_l2},
+          {"err_pressure", err_pressure},
+          {"err_jump", err_jump}};
+}
+
+BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
+                                        const BilateralOptions& options) {
+  const Stopwatch clock;
+  TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
+  const SceneData scene = manufactured_scene(bodies, exact);
+  BilateralLevel r{std::move(bodies), {}, {}, {}};
+  r.solution = solve_bilateral(r.bodies, scene, options);
+  r.time_s = clock.seconds();
+  r.limit_s = two_body_limit(r.bodies, scene);
+
+  ErrorNorms norms;
+  for (int l = 0; l < 2; ++l)
+    norms += error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material,
+                         r.bodies.part(r.solution.u, l), exact.exact(l));
+  r.err_energy = norms.relative_energy();  // the broken energy norm over both bodies
+  r.err_l2 = norms.relative_l2();
+  r.pressure = contact_pressure(r.solution.gamma, r.solution.constraints, r.solution.lambda);
+  r.jump = normal_jump(r.bodies, r.solution.gamma, r.solution.u);
+  const auto p = [&](double x) { return exact.pressure(x); };
+  const auto c = [&](double x) { return exact.normal_displacement(x); };
+  r.err_pressure = l2_error(r.pressure, p) / l2_norm(r.pressure, p);
+  // the exact jump is zero: measure [u_h.n] against the size of u.n itself
+  r.err_jump = l2_error(r.jump, [](double) { return 0.0; }) / l2_norm(r.jump, c);
+  r.h1 = r.solution.gamma.nonmortar == 0 ? r.solution.gamma.nonmortar_trace.max_element_length()
+                                         : r.solution.gamma.mortar_trace.max_element_length();
+  r.h2 = r.solution.gamma.nonmortar == 0 ? r.solution.gamma.mortar_trace.max_element_length()
+                                         : r.solution.gamma.nonmortar_trace.max_element_length();
+  return r;
+}
+
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching) {
+  TwoBodyGeometry g;
+  g.L = o.L;
+  g.H1 = o.H1;
+  g.H2 = o.H2;
+  g.n1 = 6;   // h2 / h1 = 3 / 7: n2 = 14, no node of one trace on the other but the ends
+  g.n2 = 14;
+  g.m1 = 3;
+  g.m2 = 7;
+  g.jitter = o.jitter;
+  const TwoBodies bodies = make_two_bodies(g, Material(o.E1, o.nu1), Material(o.E2, o.nu2));
+  const double p = 0.01 * std::min(o.E1, o.E2);
+  const SceneData scene = patch_test_scene(bodies, p);
+  const BilateralSolution s = solve_bilateral(bodies, scene, solver_options(o, matching));
+
+  PatchTestResult out;
+  for (int l = 0; l < 2; ++l) {
+    const Mesh& mesh = bodies.body(l).mesh;
+    const auto stress = element_stresses(mesh, bodies.body(l).material, bodies.part(s.u, l));
+    InterfaceCurve& curve = l == 0 ? out.sigma22_body1 : out.sigma22_body2;
+    for (std::size_t t = 0; t < stress.size(); ++t) {
+      out.rel_error = std::max(out.rel_error, std::fabs(stress[t][1] + p) / p);
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector2d centroid = (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3;
+      const bool touches_gamma = std::fabs(mesh.nodes[tri[0]].y()) < 1e-12 * o.L ||
+                                 std::fabs(mesh.nodes[tri[1]].y()) < 1e-12 * o.L ||
+                                 std::fabs(mesh.nodes[tri[2]].y()) < 1e-12 * o.L;
+      if (touches_gamma) {
+        curve.x.push_back(centroid.x());
+        curve.value.push_back(stress[t][1] / p);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace mortar

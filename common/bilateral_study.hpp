@@ -1,0 +1,60 @@
+// The convergence study shared by chapters 3 and 4: the manufactured two-material solution on
+// a sequence of nonmatching meshes, and the patch test, for one matching at a time.
+#pragma once
+
+#include <string>
+
+#include "common/bilateral_contact.hpp"
+#include "common/contact_fields.hpp"
+#include "common/convergence_study.hpp"
+#include "common/errors.hpp"
+#include "common/manufactured_contact.hpp"
+#include "common/options.hpp"
+
+namespace mortar {
+
+struct BilateralStudyOptions {
+  int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
+  int levels = 6;
+  double h_ratio = 1.5;  // h2 / h1
+  int nonmortar = 1;     // 1 or 2, as the user counts bodies
+  double E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25;
+  double L = 1, H1 = 0.5, H2 = 0.5;
+  double aspect = 1;  // cell width / cell height
+  double jitter = 0;
+  std::string saddle_solver = "elimination";
+  std::string out;
+  bool quick = false;
+  bool no_plot = false;
+};
+
+// Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv);
+
+// Meshes of one level: n1 = n0 2^level, n2 = max(2, round(n1 / h_ratio)), m_l rows with
+// cells of width / height = aspect.
+TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level);
+BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching);
+
+struct BilateralLevel {
+  TwoBodies bodies;
+  BilateralSolution solution;
+  InterfaceCurve pressure, jump;
+  double h1 = 0, h2 = 0;
+  double time_s = 0, limit_s = 0;
+  double err_energy = 0, err_l2 = 0, err_pressure = 0, err_jump = 0;
+  Row row() const;
+};
+
+BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
+                                        const BilateralOptions& options);
+
+// The patch test on meshes with h2 / h1 = 3 / 7: max over all triangles of
+// |sigma_22 + p| / p, and sigma_22 in the triangles along Gamma_c for the figure.
+struct PatchTestResult {
+  double rel_error = 0;
+  InterfaceCurve sigma22_body1, sigma22_body2;  // element centroids' x and sigma_22 / p
+};
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching);
+
+}  // namespace mortar

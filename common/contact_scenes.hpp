@@ -1,0 +1,28 @@
+// Loads and Dirichlet data of the two-body scenes of chapters 3 and 4 (DESIGN.md).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "common/dirichlet.hpp"
+#include "common/manufactured_contact.hpp"
+#include "common/two_bodies.hpp"
+
+namespace mortar {
+
+struct SceneData {
+  Eigen::VectorXd F;       // loads of both bodies
+  DirichletData dirichlet;  // global dof numbering of TwoBodies
+  std::vector<bool> prescribed_mask(int num_dofs) const;
+};
+
+// The manufactured solution: exact body forces, u prescribed on the top of body 1 and the
+// bottom of body 2, exact tractions sigma n on the four lateral sides. K is then definite.
+SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact& exact);
+
+// The patch test: a uniform pressure p on the top of body 1, rollers under body 2 (u_y = 0)
+// and on the left sides of both (u_x = 0), the right sides free. The exact stress is
+// sigma = diag(0, -p) in both bodies and u is linear: P1 contains it. Body 1 alone is free to
+// move in y: only the contact constraints hold it, so K alone is singular here.
+SceneData patch_test_scene(const TwoBodies& bodies, double pressure);
+
+}  // namespace mortar
