@@ -84,8 +84,8 @@ Row BilateralLevel::row() const {
 
 BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
                                         const BilateralOptions& options) {
-  const Stopwatch clock;
   TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
+  const Stopwatch clock;  // loads, stiffness, constraints, solve: everything but the mesh
   const SceneData scene = manufactured_scene(bodies, exact);
   BilateralLevel r{std::move(bodies), {}, {}, {}};
   r.solution = solve_bilateral(r.bodies, scene, options);
@@ -146,6 +146,49 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
     }
   }
   return out;
+}
+
+}  // namespace mortar
+
+namespace mortar {
+
+BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                                   Matching matching) {
+  BilateralStudy study;
+  const BilateralOptions solver = solver_options(o, matching);
+  for (int level = 0; level < o.levels; ++level) {
+    study.finest = std::make_unique<BilateralLevel>(
+        solve_manufactured_level(exact, level_geometry(o, level), solver));
+    study.table.add(study.finest->row());
+  }
+  study.patch_pointwise = run_patch_test(o, Matching::pointwise);
+  study.patch_integral = run_patch_test(o, Matching::integral);
+  return study;
+}
+
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
+                             const BilateralStudy& study, Matching matching) {
+  const BilateralLevel& f = *study.finest;
+  const bool integral = matching == Matching::integral;
+  JsonObject results;
+  results.set("h1_m", f.h1)
+      .set("h2_m", f.h2)
+      .set("dofs", f.bodies.num_dofs())
+      .set("multipliers", static_cast<int>(f.solution.lambda.size()))
+      .set("time_s", f.time_s)
+      .set("limit_s", f.limit_s)
+      .set("limit_ratio", f.time_s / f.limit_s)
+      .set("err_energy", f.err_energy)
+      .set("err_l2", f.err_l2)
+      .set("err_pressure", f.err_pressure)
+      .set("err_jump", f.err_jump)
+      .set("patch_test_rel_error", (integral ? study.patch_integral : study.patch_pointwise).rel_error)
+      .set(integral ? "patch_test_rel_error_pointwise" : "patch_test_rel_error_integral",
+           (integral ? study.patch_pointwise : study.patch_integral).rel_error)
+      .set("matching", matching_name(matching))
+      .set("saddle_solver", o.saddle_solver);
+  study.table.write_csv(o.out + "/convergence.csv");
+  write_summary(o.out + "/summary.json", parser, study.rates(), results);
 }
 
 }  // namespace mortar

@@ -2,6 +2,8 @@
 // a sequence of nonmatching meshes, and the patch test, for one matching at a time.
 #pragma once
 
+#include <map>
+#include <memory>
 #include <string>
 
 #include "common/bilateral_contact.hpp"
@@ -56,5 +58,21 @@ struct PatchTestResult {
   InterfaceCurve sigma22_body1, sigma22_body2;  // element centroids' x and sigma_22 / p
 };
 PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching);
+
+// The whole study of one chapter: every level of the manufactured solution (one line each as
+// it finishes), then the patch test with both matchings on the same meshes.
+struct BilateralStudy {
+  ConvergenceTable table;
+  std::unique_ptr<BilateralLevel> finest;
+  PatchTestResult patch_pointwise, patch_integral;
+  std::map<std::string, double> rates() const { return table.rates(); }
+};
+BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                                   Matching matching);
+
+// convergence.csv and summary.json; results hold the finest level, the patch test of this
+// chapter's matching (patch_test_rel_error) and of the other one.
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
+                             const BilateralStudy& study, Matching matching);
 
 }  // namespace mortar

@@ -56,16 +56,21 @@ ElementMatrix element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const M
   return area * B.transpose() * material.voigt() * B;
 }
 
-SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(36 * mesh.triangles.size());
+void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
+                            std::vector<Eigen::Triplet<double>>& triplets) {
+  triplets.reserve(triplets.size() + 36 * mesh.triangles.size());
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     const ElementMatrix Ke = element_stiffness(triangle_vertices(mesh, t), material);
     const auto& tri = mesh.triangles[t];
     for (int a = 0; a < 6; ++a)
       for (int b = 0; b < 6; ++b)
-        triplets.emplace_back(2 * tri[a / 2] + a % 2, 2 * tri[b / 2] + b % 2, Ke(a, b));
+        triplets.emplace_back(offset + 2 * tri[a / 2] + a % 2, offset + 2 * tri[b / 2] + b % 2, Ke(a, b));
   }
+}
+
+SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  add_stiffness_triplets(mesh, material, 0, triplets);
   SparseMatrix K(mesh.num_dofs(), mesh.num_dofs());
   K.setFromTriplets(triplets.begin(), triplets.end());  // duplicates are summed
   return K;

@@ -43,6 +43,9 @@ ElementMatrix element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const M
 
 // Global stiffness K of one body, assembled from element matrices by triplets.
 SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material);
+// The triplets of K, with every dof index shifted by `offset` (several bodies, one matrix).
+void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
+                            std::vector<Eigen::Triplet<double>>& triplets);
 
 // Load vector of a body force f: F_i = int f . phi_i, with a triangle rule of the given degree.
 Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree);

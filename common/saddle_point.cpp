@@ -9,6 +9,28 @@
 
 namespace mortar {
 
+namespace {
+// An LU runs through a singular matrix whenever round-off leaves a tiny pivot, and with a
+// consistent right-hand side the residual even looks fine. Singular to working precision
+// means: UMFPACK's reciprocal pivot ratio min |U_ii| / max |U_ii| below this (after its row
+// scaling), or, with Eigen's SparseLU, a solve that cannot give back a known vector.
+constexpr double singular_rcond = 1e-14;
+
+[[noreturn]] void report_singular_saddle(const std::string& how) {
+  throw std::runtime_error("saddle point (LU): the matrix [K B^T; B 0] is singular to working "
+                           "precision (" + how + "): is a body free to move rigidly in a "
+                           "direction the constraints do not hold, such as sliding along Gamma_c?");
+}
+
+#ifdef MORTAR_HAVE_UMFPACK
+class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
+ public:
+  using Eigen::UmfPackLU<SparseMatrix>::UmfPackLU;
+  double rcond() const { return m_umfpackInfo[UMFPACK_RCOND]; }
+};
+#endif
+}  // namespace
+
 SaddleSolver parse_saddle_solver(const std::string& name) {
   if (name == "lu") return SaddleSolver::lu;
   if (name == "elimination") return SaddleSolver::elimination;
@@ -57,15 +79,19 @@ SaddlePointSolution solve_saddle_point_lu(const SaddlePointProblem& p) {
   rhs << p.f, p.G;
 
 #ifdef MORTAR_HAVE_UMFPACK
-  Eigen::UmfPackLU<SparseMatrix> lu(A);
+  UmfPackLU lu(A);
+  if (lu.info() != Eigen::Success) report_singular_saddle("UMFPACK found a zero pivot");
+  if (!(lu.rcond() > singular_rcond))
+    report_singular_saddle("UMFPACK pivot ratio " + std::to_string(lu.rcond()));
 #else
   Eigen::SparseLU<SparseMatrix> lu(A);
+  if (lu.info() != Eigen::Success) report_singular_saddle("SparseLU found a zero pivot");
+  const Eigen::VectorXd probe = Eigen::VectorXd::LinSpaced(n + m, 1.0, 2.0);
+  const Eigen::VectorXd back = lu.solve(A * probe);
+  if (!((back - probe).norm() < 1e-6 * probe.norm()))
+    report_singular_saddle("a solve of A x = A v missed v by " +
+                           std::to_string((back - probe).norm() / probe.norm()));
 #endif
-  if (lu.info() != Eigen::Success)
-    throw std::runtime_error("saddle point (LU): the " + std::to_string(n + m) +
-                             " x " + std::to_string(n + m) +
-                             " matrix is singular: is a body free to move rigidly, or are two "
-                             "constraint rows dependent?");
   const Eigen::VectorXd x = lu.solve(rhs);
   if (!x.allFinite() || (A * x - rhs).norm() > 1e-8 * rhs.norm())
     throw std::runtime_error("saddle point (LU): the solve is not accurate (residual " +

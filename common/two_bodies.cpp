@@ -8,12 +8,7 @@ TwoBodies::TwoBodies(Body body1, Body body2) : bodies_{std::move(body1), std::mo
 
 SparseMatrix TwoBodies::stiffness() const {
   std::vector<Eigen::Triplet<double>> triplets;
-  for (int l = 0; l < 2; ++l) {
-    const SparseMatrix K = assemble_stiffness(bodies_[l].mesh, bodies_[l].material);
-    for (int k = 0; k < K.outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(K, k); it; ++it)
-        triplets.emplace_back(offset(l) + it.row(), offset(l) + it.col(), it.value());
-  }
+  for (int l = 0; l < 2; ++l) add_stiffness_triplets(bodies_[l].mesh, bodies_[l].material, offset(l), triplets);
   SparseMatrix K(num_dofs(), num_dofs());
   K.setFromTriplets(triplets.begin(), triplets.end());
   return K;

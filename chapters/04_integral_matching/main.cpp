@@ -7,12 +7,11 @@
 // lambda_h and of the jump [u_h.n], against Theorem 4.2 (O(h)); then runs the patch test,
 // which integral matching passes to round-off and pointwise matching fails.
 //
-//   ch04_integral_matching                       # h2/h1 = 3/2, up to about 210k dofs
+//   ch04_integral_matching                       # h2/h1 = 3/2, up to about 215k dofs
 //   ch04_integral_matching --h-ratio 1/3 --nonmortar 2
 //   ch04_integral_matching --E1 1e6 --E2 1 --jitter 0.3
 #include <cstdio>
 #include <exception>
-#include <memory>
 
 #include "common/bilateral_study.hpp"
 #include "common/contact_plots.hpp"
@@ -28,52 +27,30 @@ int main(int argc, char** argv) {
   try {
     // 2. The exact two-material solution: the bodies slide on each other, stay glued in y.
     const mortar::ManufacturedContact exact(mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2), o.L);
-    const mortar::BilateralOptions solver = mortar::solver_options(o, mortar::Matching::integral);
 
-    // 3. Refine both meshes together, h2/h1 fixed; one line per level.
-    mortar::ConvergenceTable table;
-    std::unique_ptr<mortar::BilateralLevel> finest;
-    for (int level = 0; level < o.levels; ++level) {
-      finest = std::make_unique<mortar::BilateralLevel>(
-          mortar::solve_manufactured_level(exact, mortar::level_geometry(o, level), solver));
-      table.add(finest->row());
-    }
+    // 3. Refine both meshes together with h2/h1 fixed, then the patch test (h2/h1 = 3/7).
+    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::integral);
 
-    // 4. The patch test, both matchings on the same h2/h1 = 3/7 meshes.
-    const mortar::PatchTestResult patch = mortar::run_patch_test(o, mortar::Matching::integral);
-    const mortar::PatchTestResult patch_pointwise = mortar::run_patch_test(o, mortar::Matching::pointwise);
-
-    // 5. convergence.csv and summary.json.
-    const auto rates = table.rates();
-    mortar::JsonObject results;
-    results.set("h1_m", finest->h1)
-        .set("h2_m", finest->h2)
-        .set("dofs", finest->bodies.num_dofs())
-        .set("time_s", finest->time_s)
-        .set("limit_s", finest->limit_s)
-        .set("limit_ratio", finest->time_s / finest->limit_s)
-        .set("err_energy", finest->err_energy)
-        .set("err_pressure", finest->err_pressure)
-        .set("patch_test_rel_error", patch.rel_error)
-        .set("patch_test_rel_error_pointwise", patch_pointwise.rel_error);
-    table.write_csv(o.out + "/convergence.csv");
-    mortar::write_summary(o.out + "/summary.json", parser, rates, results);
-    std::printf("rates (three finest levels): energy %.3f, L2 %.3f, pressure %.3f, jump %.3f "
-                "(Theorem 4.2: energy 1)\n",
+    // 4. What theory says, next to what we see.
+    mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::integral);
+    const auto rates = study.rates();
+    const mortar::BilateralLevel& finest = *study.finest;
+    std::printf("rates (three finest levels): energy %.3f (Theorem 4.2: 1), L2 %.3f, "
+                "pressure %.3f, jump %.3f\n",
                 rates.at("err_energy"), rates.at("err_l2"), rates.at("err_pressure"), rates.at("err_jump"));
-    std::printf("patch test, max |sigma_22 + p| / p: integral %.2e, pointwise %.2e\n", patch.rel_error,
-                patch_pointwise.rel_error);
+    std::printf("patch test, max |sigma_22 + p| / p: integral %.2e, pointwise %.2e\n",
+                study.patch_integral.rel_error, study.patch_pointwise.rel_error);
     std::printf("finest level: %d dofs, %.3f s, %.2f x the physical limit (%.3f s)\n",
-                finest->bodies.num_dofs(), finest->time_s, finest->time_s / finest->limit_s, finest->limit_s);
+                finest.bodies.num_dofs(), finest.time_s, finest.time_s / finest.limit_s, finest.limit_s);
 
-    // 6. Figures.
+    // 5. Figures.
     const bool run = !o.no_plot;
-    mortar::plot_contact_errors(o.out, table, "integral matching: errors against h",
+    mortar::plot_contact_errors(o.out, study.table, "integral matching: errors against h",
                                 {{1.0, 0, 0.4, "slope 1 (Theorem 4.2)"}, {2.0, 1, 0.4, ""}}, run);
-    mortar::plot_contact_error_vs_time(o.out, table, "integral matching: error against wall time", run);
-    mortar::plot_pressure(o.out, *finest, exact, "integral matching: contact pressure lambda_h on the finest mesh", run);
-    mortar::plot_jump(o.out, *finest, "integral matching: normal jump on the finest mesh", run);
-    mortar::plot_patch_test(o.out, patch_pointwise, patch, run);
+    mortar::plot_contact_error_vs_time(o.out, study.table, "integral matching: error against wall time", run);
+    mortar::plot_pressure(o.out, finest, exact, "integral matching: contact pressure lambda_h, finest mesh", run);
+    mortar::plot_jump(o.out, finest, "integral matching: normal jump [u_h.n], finest mesh", run);
+    mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch04_integral_matching: error: %s\n", e.what());
