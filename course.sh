@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 
 packages=(g++ cmake make libeigen3-dev libgsl-dev gnuplot-nox fonts-dejavu-core
           libsuitesparse-dev libopenblas0-pthread googletest libgtest-dev libgmock-dev)
-chapters=(ch01_interface_traces ch02_p1_triangles)
+chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching)
 jobs=$(nproc 2>/dev/null || echo 2)
 
 install_missing() {

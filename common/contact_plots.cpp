@@ -87,11 +87,11 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
 void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise,
                      const PatchTestResult& integral, bool run) {
   Figure fig;
-  fig.title = "patch test, h2/h1 = 3/7: sigma_22 in the triangles along Gamma_c (exact: -p)";
+  fig.title = "patch test, h2/h1 = 3/7: sigma_{22} in the triangles along Gamma_c (exact: -p)";
   fig.xlabel = "x of the triangle's centroid [m]";
-  fig.ylabel = "sigma_22 / p [-]";
-  fig.key = "outside below maxrows 2";
-  fig.height = 750;
+  fig.ylabel = "sigma_{22} / p [-]";
+  fig.key = "outside right top";
+  fig.width = 1200;
   fig.series.push_back(curve_series(pointwise.sigma22_body1, "pointwise matching, body 1", "linespoints", "pt 6 lc rgb '#d62728'"));
   fig.series.push_back(curve_series(pointwise.sigma22_body2, "pointwise matching, body 2", "linespoints", "pt 4 lc rgb '#ff7f0e'"));
   fig.series.push_back(curve_series(integral.sigma22_body1, "integral matching, body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));

@@ -135,3 +135,49 @@ TEST(Programs, ch02_jittered_meshes_keep_the_rates) {
   EXPECT_NEAR(summary_value(dir, "rates", "err_energy"), 1.0, 0.1);
   EXPECT_NEAR(summary_value(dir, "rates", "err_l2"), 2.0, 0.15);
 }
+
+TEST(Programs, ch03_and_ch04_refuse_bad_input_with_status_2) {
+  for (const char* program : {CH03, CH04}) {
+    expect_refused(program, "--bogus", "bogus");
+    expect_refused(program, "--E1 -1", "E1");
+    expect_refused(program, "--E2 0", "E2");
+    expect_refused(program, "--nu1 0.5", "nu1");
+    expect_refused(program, "--nu2 1", "nu2");
+    expect_refused(program, "--n0 0", "n0");
+    expect_refused(program, "--n0 1", "n0");
+    expect_refused(program, "--n0 x", "n0");
+    expect_refused(program, "--h-ratio 0", "h-ratio");
+    expect_refused(program, "--h-ratio -3/2", "h-ratio");
+    expect_refused(program, "--h-ratio nan", "h-ratio");
+    expect_refused(program, "--nonmortar 3", "nonmortar");
+    expect_refused(program, "--levels 2", "levels");
+    expect_refused(program, "--n0 4096 --levels 6", "levels");
+    expect_refused(program, "--saddle-solver cg", "saddle-solver");
+    expect_refused(program, "--jitter 0.5", "jitter");
+    expect_refused(program, "--aspect 0", "aspect");
+    expect_refused(program, "--out /proc/nope", "out");
+  }
+}
+
+TEST(Programs, ch04_passes_the_patch_test_and_ch03_fails_it_on_the_same_meshes) {
+  const std::string d3 = out_dir("ch03"), d4 = out_dir("ch04");
+  const ProgramRun r3 = run(std::string(CH03) + " --quick --no-plot --out " + d3);
+  const ProgramRun r4 = run(std::string(CH04) + " --quick --no-plot --out " + d4);
+  ASSERT_EQ(r3.status, 0) << r3.output;
+  ASSERT_EQ(r4.status, 0) << r4.output;
+  EXPECT_LT(summary_value(d4, "results", "patch_test_rel_error"), 1e-10);
+  EXPECT_GT(summary_value(d3, "results", "patch_test_rel_error"), 1e-4);
+  EXPECT_GT(summary_value(d4, "results", "limit_ratio"), 0.0);
+}
+
+// Theorem 4.2: O(h) in the energy norm for integral matching. On levels of 12..48 body-1
+// elements the fitted rates are 0.99-1.00 for every ratio measured (band: >= 0.9).
+TEST(Programs, ch04_energy_rate_is_one_for_nonnested_and_nested_ratios) {
+  for (const char* ratio : {"3/2", "1/3", "3"}) {
+    const std::string dir = out_dir("ch04_rates");
+    const ProgramRun r = run(std::string(CH04) + " --n0 12 --levels 3 --no-plot --h-ratio " + ratio + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_GE(summary_value(dir, "rates", "err_energy"), 0.9) << "h2/h1 = " << ratio;
+    EXPECT_GE(summary_value(dir, "rates", "err_pressure"), 0.9) << "h2/h1 = " << ratio;
+  }
+}
