@@ -8,6 +8,7 @@
 // unilateral contact (chapter 5) is B u <= G.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,5 +50,11 @@ struct Constraints {
 // says nothing about the unknowns and would make the saddle-point matrix singular.
 Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& gamma,
                               Matching matching, const std::vector<bool>& prescribed);
+
+// The right-hand side G of B u <= G for an initial gap g(x) >= 0 (paper section 5):
+// G_a = g(a) for pointwise rows, G_i = int g psi_i for integral rows (3-point Gauss on each
+// element of the non-mortar trace: exact for the quadratic gap of the Hertz scene).
+Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
+                           const std::function<double(double)>& g);
 
 }  // namespace mortar

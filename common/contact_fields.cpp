@@ -83,4 +83,35 @@ double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>&
   return l2_error(zero, f);
 }
 
+double ContactZone::half_width() const {
+  if (empty) return 0.0;
+  return 0.5 * (0.5 * (right_active + right_inactive) - 0.5 * (left_active + left_inactive));
+}
+
+bool ContactZone::brackets(double centre, double a) const {
+  if (empty) return a == 0.0;
+  return centre - a <= left_active && centre - a >= left_inactive &&
+         centre + a >= right_active && centre + a <= right_inactive;
+}
+
+ContactZone contact_zone(const InterfaceCurve& p) {
+  ContactZone z;
+  const int n = static_cast<int>(p.x.size());
+  int first = -1, last = -1;
+  for (int i = 0; i < n; ++i)
+    if (p.value[i] > 0) {
+      if (first < 0) first = i;
+      last = i;
+      ++z.active_nodes;
+    }
+  if (first < 0) return z;
+  z.empty = false;
+  z.left_active = p.x[first];
+  z.right_active = p.x[last];
+  // at the ends of Gamma_c the zone can reach no further
+  z.left_inactive = first > 0 ? p.x[first - 1] : p.x[first];
+  z.right_inactive = last + 1 < n ? p.x[last + 1] : p.x[last];
+  return z;
+}
+
 }  // namespace mortar

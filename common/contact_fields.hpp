@@ -38,4 +38,18 @@ double total_contact_force(const ContactInterface& gamma, const Constraints& c,
 double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact);
 double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& exact_for_grid);
 
+// The contact zone read off a nodal pressure: the outermost nodes with p > 0 on each side and
+// their first neighbours with p = 0. The half-width estimate puts each edge of the zone at
+// the midpoint between the two, so it is off by at most half an element on each side.
+struct ContactZone {
+  bool empty = true;
+  double left_active = 0, right_active = 0;      // outermost nodes in contact
+  double left_inactive = 0, right_inactive = 0;  // their first neighbours out of contact
+  int active_nodes = 0;
+  double half_width() const;  // 0 when empty
+  // Does the zone [centre - a, centre + a] have its edges between active and inactive nodes?
+  bool brackets(double centre, double a) const;
+};
+ContactZone contact_zone(const InterfaceCurve& pressure);
+
 }  // namespace mortar

@@ -136,6 +136,22 @@ void SpdSolver::factorize(const SparseMatrix& K) {
   impl_->factorized = true;
 }
 
+Eigen::MatrixXd SpdSolver::solve_many(const Eigen::MatrixXd& rhs) const {
+  if (!impl_->factorized) throw std::logic_error("SpdSolver::solve called before factorize");
+  if (rhs.rows() != impl_->size)
+    throw std::invalid_argument("SpdSolver::solve: rhs has " + std::to_string(rhs.rows()) +
+                                " rows, K has " + std::to_string(impl_->size));
+  Eigen::MatrixXd x;
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (backend_ == SpdBackend::cholmod) x = impl_->cholmod.solve(rhs);
+  else x = impl_->ldlt.solve(rhs);
+#else
+  x = impl_->ldlt.solve(rhs);
+#endif
+  if (!x.allFinite()) throw std::runtime_error("SpdSolver: the solve produced non-finite values");
+  return x;
+}
+
 Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& rhs) const {
   if (!impl_->factorized) throw std::logic_error("SpdSolver::solve called before factorize");
   if (rhs.size() != impl_->size)

@@ -28,6 +28,8 @@ class SpdSolver {
   // K is not positive definite, e.g. a body left free to move rigidly.
   void factorize(const SparseMatrix& K);
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+  // Several right-hand sides at once (the columns of rhs): one pass through the factor.
+  Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs) const;
   SpdBackend backend() const { return backend_; }
 
  private:

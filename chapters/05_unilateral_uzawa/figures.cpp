@@ -1,0 +1,157 @@
+#include "figures.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include "common/plot.hpp"
+
+namespace chapter05 {
+
+using mortar::Figure;
+using mortar::Series;
+
+namespace {
+double at(const mortar::InterfaceCurve& c, double x) {
+  mortar::InterfaceTrace t;
+  t.x = c.x;
+  return t.evaluate(c.value, x);
+}
+}  // namespace
+
+void write_contact_csv(const std::string& path, const UnilateralLevel& r) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f.precision(10);
+  f << "x,pressure,jump,gap\n";
+  for (std::size_t k = 0; k < r.jump.x.size(); ++k) {
+    const double x = r.jump.x[k];
+    f << x << "," << at(r.pressure, x) << "," << r.jump.value[k] << "," << r.gap(x) - r.jump.value[k] << "\n";
+  }
+}
+
+void plot_pressures(const std::string& folder, const Options& o, const Reference& ref,
+                    const mortar::ManufacturedContact& exact,
+                    const std::vector<const UnilateralLevel*>& levels, bool run) {
+  Figure fig;
+  fig.title = "contact pressure on the finest mesh, scene " + o.scene;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "contact pressure p [Pa]";
+  fig.key = "top right";
+  Series truth{"", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
+  const UnilateralLevel& first = *levels.front();
+  for (int i = 0; i <= 1000; ++i) {
+    const double x = o.L * i / 1000.0;
+    truth.x.push_back(x);
+    if (ref.kind == "hertz") truth.y.push_back(hertz_for(o, first).pressure(x - o.L / 2));
+    else if (ref.kind == "exact") truth.y.push_back(exact.pressure(x));
+    else truth.y.push_back(at(ref.finer->pressure, x));
+  }
+  truth.title = ref.kind == "hertz" ? "plane-strain Hertz at the computed force"
+                                    : ref.kind == "exact" ? "exact -sigma_N" : "reference, two levels finer";
+  fig.series.push_back(truth);
+  const char* styles[] = {"pt 7 ps 0.7 lc rgb '#1f77b4'", "pt 6 ps 0.8 lc rgb '#d62728'"};
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const UnilateralLevel& r = *levels[k];
+    const std::string name = r.constraints.matching == mortar::Matching::integral
+                                 ? "integral matching: lambda_h"
+                                 : "pointwise matching: nodal force / tributary length";
+    fig.series.push_back({name, r.pressure.x, r.pressure.value, "linespoints", styles[k % 2]});
+  }
+  if (ref.kind == "hertz")
+    fig.title += ", Hertz half-width a = " + std::to_string(hertz_for(o, first).half_width()).substr(0, 6) + " m";
+  mortar::write_figure(folder, "pressure", fig, run);
+}
+
+void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run) {
+  Figure fig;
+  fig.title = "the state of Gamma_c on the finest mesh: where the bodies touch, where they separate";
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "scaled by its maximum [-]";
+  fig.key = "outside below maxrows 1";
+  fig.height = 700;
+  const double pmax = std::max(1e-300, *std::max_element(r.pressure.value.begin(), r.pressure.value.end()));
+  Series p{"pressure p / max p", r.pressure.x, {}, "linespoints", "pt 7 ps 0.5 lw 2 lc rgb '#1f77b4'"};
+  for (double v : r.pressure.value) p.y.push_back(v / pmax);
+  Series gap{"open gap (g - [u.n]) / max", r.jump.x, {}, "lines", "lw 2 lc rgb '#d62728'"};
+  double gmax = 1e-300;
+  for (std::size_t k = 0; k < r.jump.x.size(); ++k) gmax = std::max(gmax, r.gap(r.jump.x[k]) - r.jump.value[k]);
+  for (std::size_t k = 0; k < r.jump.x.size(); ++k) gap.y.push_back((r.gap(r.jump.x[k]) - r.jump.value[k]) / gmax);
+  Series zone{"contact set (nodes with p > 0)", {}, {}, "points", "pt 5 ps 0.6 lc rgb '#2ca02c'"};
+  for (std::size_t k = 0; k < r.pressure.x.size(); ++k)
+    if (r.pressure.value[k] > 0) {
+      zone.x.push_back(r.pressure.x[k]);
+      zone.y.push_back(-0.05);
+    }
+  fig.series = {p, gap, zone};
+  mortar::write_figure(folder, "contact_state", fig, run);
+}
+
+void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run) {
+  Figure fig;
+  fig.title = "errors against h (chosen matching and solver)";
+  fig.xlabel = "h = max(h1, h2) [m]";
+  fig.ylabel = "relative error [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "bottom right";
+  const auto h = table.column("h");
+  const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11"};
+  int k = 0;
+  for (const auto& name : table.columns())
+    if (name.rfind("err_", 0) == 0) {
+      std::vector<double> e = table.column(name);
+      for (double& v : e) v = std::max(v, 1e-16);
+      fig.series.push_back({name, h, e, "linespoints", std::string(markers[k++ % 4]) + " lw 2"});
+    }
+  fig.slopes.push_back({1.0, 0, 0.5, "slope 1"});
+  fig.slopes.push_back({0.25, 0, 0.8, "slope 1/4 (Theorem 5.1)"});
+  mortar::write_figure(folder, "error_vs_h", fig, run);
+}
+
+void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,
+                            const std::string& error_name, bool run) {
+  Figure iterations, timing;
+  iterations.title = "iterations to the tolerance against h";
+  iterations.xlabel = "h = max(h1, h2) [m]";
+  iterations.ylabel = "iterations [-]";
+  iterations.log_x = iterations.log_y = true;
+  iterations.key = "outside right top";
+  iterations.width = 1200;
+  timing.title = "error against wall time, every solver, both matchings";
+  timing.xlabel = "wall time of the level [s]";
+  timing.ylabel = error_name + " [-]";
+  timing.log_x = timing.log_y = true;
+  timing.key = "outside right top";
+  timing.width = 1200;
+  const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'"};
+  int k = 0;
+  for (const std::string matching : {"integral", "pointwise"})
+    for (const std::string solver : {"pdas", "uzawa-nesterov", "uzawa"}) {
+      Series it{matching + ", " + solver, {}, {}, "linespoints", ""}, tm = it;
+      for (const SolverRun& r : runs)
+        if (r.matching == matching && r.solver == solver) {
+          it.x.push_back(r.h);
+          it.y.push_back(std::max(1, r.iterations));
+          tm.x.push_back(r.time_s);
+          tm.y.push_back(std::max(r.error, 1e-16));
+        }
+      const std::string style = std::string("lw 2 lc rgb ") + colours[k % 3] +
+                                (matching == "integral" ? " pt 7" : " pt 6 dt 2");
+      it.extra = tm.extra = style;
+      iterations.series.push_back(it);
+      timing.series.push_back(tm);
+      ++k;
+    }
+  Series limit{"physical limit (assemble K, Cholesky, solve)", {}, {}, "points", "pt 3 ps 1.5 lc rgb '#000000'"};
+  for (const SolverRun& r : runs)
+    if (r.matching == "integral" && r.solver == "pdas") {
+      limit.x.push_back(r.limit_s);
+      limit.y.push_back(std::max(r.error, 1e-16));
+    }
+  timing.series.push_back(limit);
+  iterations.slopes.push_back({-1.0, 2, 0.0, "slope -1 (1/h)"});
+  iterations.slopes.push_back({-0.5, 1, 0.0, "slope -1/2 (1/sqrt(h))"});
+  mortar::write_figure(folder, "iterations", iterations, run);
+  mortar::write_figure(folder, "error_vs_time", timing, run);
+}
+
+}  // namespace chapter05

@@ -1,0 +1,21 @@
+// The figures and the contact.csv of chapter 5.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "study.hpp"
+
+namespace chapter05 {
+
+void write_contact_csv(const std::string& path, const UnilateralLevel& r);
+void plot_pressures(const std::string& folder, const Options& o, const Reference& ref,
+                    const mortar::ManufacturedContact& exact,
+                    const std::vector<const UnilateralLevel*>& levels, bool run);
+void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run);
+void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run);
+void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,
+                            const std::string& error_name, bool run);
+
+}  // namespace chapter05

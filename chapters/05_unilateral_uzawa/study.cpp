@@ -1,0 +1,199 @@
+#include "study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace chapter05 {
+
+namespace {
+constexpr long long max_dofs = 8'000'000;
+
+double max_value(const mortar::InterfaceCurve& c) {
+  return c.value.empty() ? 0.0 : *std::max_element(c.value.begin(), c.value.end());
+}
+
+// A P1 curve as a function of x (for errors against a reference curve).
+std::function<double(double)> as_function(const mortar::InterfaceCurve& c) {
+  return [&c](double x) {
+    const auto it = std::upper_bound(c.x.begin(), c.x.end(), x);
+    const std::size_t e = std::clamp<std::size_t>(it - c.x.begin(), 1, c.x.size() - 1) - 1;
+    const double t = (x - c.x[e]) / (c.x[e + 1] - c.x[e]);
+    return (1 - t) * c.value[e] + t * c.value[e + 1];
+  };
+}
+
+double relative(double error, double norm) { return norm > 0 ? error / norm : 0.0; }
+}  // namespace
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
+  using mortar::Range;
+  parser.add_choice("scene", o.scene, {"hertz", "partial", "bilateral"}, "contact scene");
+  parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
+  parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
+  parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with momentum or the paper's plain one");
+  parser.add_double("rho", o.rho, "Uzawa step rho; 0 = 1 / ||B K^-1 B^T|| by power iteration", Range::closed(0, 1e300));
+  parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 14));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 10));
+  parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)", Range::closed(0.01, 100));
+  parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, which carries the multipliers (1 or 2)", Range::closed(1, 2));
+  parser.add_double("E1", o.E1, "Young's modulus of body 1 [Pa]", Range::positive());
+  parser.add_double("nu1", o.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
+  parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::positive());
+  parser.add_double("nu2", o.nu2, "Poisson ratio of body 2", Range::open(-1, 0.5));
+  parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H1", o.H1, "height of body 1 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("R", o.R, "radius of the Hertz gap (x - L/2)^2 / (2R) [m]", Range::closed(1e-6, 1e12));
+  parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", Range::closed(-1e6, 1e6));
+  parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
+  bool no_compare = false;
+  parser.add_flag("no-compare", no_compare, "skip the comparison of every solver on both matchings");
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3)");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.parse(argc, argv);
+  o.compare = !no_compare;
+  if (o.quick) {
+    o.n0 = 8;
+    o.levels = 3;
+  }
+  const long long n1 = static_cast<long long>(o.n0) << (o.levels - 1);
+  const long long n2 = std::max(2LL, std::llround(n1 / o.h_ratio));
+  const long long dofs = 2 * (n1 + 1) * (std::llround(n1 * o.H1 / o.L) + 2) + 2 * (n2 + 1) * (std::llround(n2 * o.H2 / o.L) + 2);
+  // the partial scene solves two levels finer for its reference
+  const long long reference_factor = o.scene == "partial" ? 16 : 1;
+  if (dofs * reference_factor > max_dofs)
+    parser.fail("levels", "the finest level would have about " + std::to_string(dofs * reference_factor) +
+                              " dofs, more than " + std::to_string(max_dofs));
+  mortar::prepare_output_folder(parser, o.out);
+}
+
+mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver, bool accelerate) {
+  mortar::ContactSolverOptions s;
+  s.kind = mortar::parse_contact_solver(solver);
+  s.accelerate = accelerate;
+  s.tol = o.tol;
+  s.rho = o.rho;
+  return s;
+}
+
+UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matching,
+                            const mortar::ContactSolverOptions& solver) {
+  UnilateralSetup s;
+  mortar::TwoBodyGeometry& g = s.geometry;
+  g.L = o.L;
+  g.H1 = o.H1;
+  g.H2 = o.H2;
+  g.jitter = o.jitter;
+  g.n1 = o.n0 << level;
+  g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
+  g.m1 = std::max(1, static_cast<int>(std::lround(g.n1 * o.H1 / o.L)));
+  g.m2 = std::max(1, static_cast<int>(std::lround(g.n2 * o.H2 / o.L)));
+  s.matching = matching;
+  s.nonmortar = o.nonmortar - 1;
+  s.solver = solver;
+  s.scene = {o.scene, o.L, o.R, o.delta};
+  return s;
+}
+
+Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact) {
+  Reference ref;
+  if (o.scene == "hertz") ref.kind = "hertz";
+  if (o.scene == "bilateral") ref.kind = "exact";
+  if (o.scene == "partial") {
+    ref.kind = "finer mesh";
+    // two levels beyond the finest, integral matching, active set: the best we can afford
+    ref.finer = std::make_unique<UnilateralLevel>(solve_unilateral_level(
+        level_setup(o, o.levels + 1, mortar::Matching::integral, solver_options(o, "pdas", true)), exact));
+  }
+  return ref;
+}
+
+Hertz hertz_for(const Options& o, const UnilateralLevel& r) {
+  return hertz_at_force(o.E1, o.nu1, o.E2, o.nu2, o.R, r.total_force);
+}
+
+mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
+                      const mortar::ManufacturedContact& exact) {
+  mortar::Row row = {{"h", std::max(r.h1, r.h2)},
+                     {"h1", r.h1},
+                     {"h2", r.h2},
+                     {"dofs", static_cast<double>(r.bodies.num_dofs())},
+                     {"multipliers", static_cast<double>(r.solution.lambda.size())},
+                     {"active", static_cast<double>(r.zone.active_nodes)},
+                     {"iterations", static_cast<double>(r.solution.iterations)},
+                     {"columns", static_cast<double>(r.solution.columns)},
+                     {"time_s", r.time_s},
+                     {"limit_s", r.limit_s},
+                     {"total_force", r.total_force},
+                     {"half_width", r.zone.half_width()},
+                     {"max_pressure", max_value(r.pressure)},
+                     {"complementarity_residual", r.solution.residual}};
+  if (ref.kind == "hertz") {
+    const Hertz h = hertz_for(o, r);
+    const double x0 = o.L / 2;
+    const auto p = [&](double x) { return h.pressure(x - x0); };
+    row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});
+    row.push_back({"err_peak_pressure", relative(std::fabs(max_value(r.pressure) - h.peak_pressure()), h.peak_pressure())});
+    row.push_back({"err_half_width", relative(std::fabs(r.zone.half_width() - h.half_width()), h.half_width())});
+  } else if (ref.kind == "exact") {
+    mortar::ErrorNorms norms;
+    for (int l = 0; l < 2; ++l)
+      norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(r.u, l), exact.exact(l));
+    const auto p = [&](double x) { return exact.pressure(x); };
+    const auto c = [&](double x) { return exact.normal_displacement(x); };
+    row.push_back({"err_energy", norms.relative_energy()});
+    row.push_back({"err_l2", norms.relative_l2()});
+    row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});
+    row.push_back({"err_jump", relative(mortar::l2_error(r.jump, [](double) { return 0.0; }), mortar::l2_norm(r.jump, c))});
+  } else {
+    const auto p = as_function(ref.finer->pressure);
+    row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});
+    row.push_back({"err_total_force", relative(std::fabs(r.total_force - ref.finer->total_force), ref.finer->total_force)});
+  }
+  return row;
+}
+
+std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ManufacturedContact& exact,
+                                       const Reference& ref,
+                                       std::vector<std::unique_ptr<UnilateralLevel>>& finest_by_matching) {
+  struct Variant {
+    std::string label, solver;
+    bool accelerate;
+  };
+  const Variant variants[] = {{"pdas", "pdas", true}, {"uzawa-nesterov", "uzawa", true}, {"uzawa", "uzawa", false}};
+  std::vector<SolverRun> runs;
+  finest_by_matching.clear();
+  for (const std::string matching : {"integral", "pointwise"}) {
+    std::unique_ptr<UnilateralLevel> finest;
+    for (int level = 0; level < o.levels; ++level)
+      for (const Variant& v : variants) {
+        auto r = std::make_unique<UnilateralLevel>(solve_unilateral_level(
+            level_setup(o, level, mortar::parse_matching(matching), solver_options(o, v.solver, v.accelerate)), exact));
+        const mortar::Row row = level_row(o, *r, ref, exact);
+        SolverRun run{matching, v.label, level, std::max(r->h1, r->h2), r->time_s, r->limit_s, 0,
+                      r->total_force, r->solution.iterations, r->solution.columns};
+        for (const auto& [name, value] : row)
+          if (name == (ref.kind == "exact" ? "err_energy" : "err_pressure")) run.error = value;
+        runs.push_back(run);
+        std::printf("compare: %-9s %-15s level %d  iterations %6d  columns %4d  time %.3f s  error %.3e\n",
+                    matching.c_str(), v.label.c_str(), level, run.iterations, run.columns, run.time_s, run.error);
+        if (level == o.levels - 1 && v.label == "pdas") finest = std::move(r);
+      }
+    finest_by_matching.push_back(std::move(finest));
+  }
+  return runs;
+}
+
+void write_solver_runs(const std::string& path, const std::vector<SolverRun>& runs) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f << "matching,solver,level,h,iterations,columns,time_s,limit_s,error,total_force\n";
+  for (const SolverRun& r : runs)
+    f << r.matching << "," << r.solver << "," << r.level << "," << r.h << "," << r.iterations << ","
+      << r.columns << "," << r.time_s << "," << r.limit_s << "," << r.error << "," << r.total_force << "\n";
+}
+
+}  // namespace chapter05

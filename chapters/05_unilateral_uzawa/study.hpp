@@ -1,0 +1,63 @@
+// The convergence study of chapter 5: one table row per level for the chosen matching and
+// solver, and a comparison of every solver on both matchings at every level.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/convergence_study.hpp"
+#include "common/options.hpp"
+#include "hertz.hpp"
+#include "unilateral_level.hpp"
+
+namespace chapter05 {
+
+struct Options {
+  std::string scene = "hertz";
+  std::string matching = "integral";
+  std::string solver = "pdas";
+  std::string acceleration = "nesterov";
+  double rho = 0, tol = 1e-8;
+  int n0 = 12, levels = 5, nonmortar = 1;
+  double h_ratio = 1.5;
+  double E1 = 1, nu1 = 0.3, E2 = 1, nu2 = 0.3;
+  double L = 1, H1 = 1, H2 = 1, R = 1, delta = 0.02;
+  double jitter = 0;
+  bool compare = true;
+  std::string out = "results/ch05_unilateral_uzawa";
+  bool quick = false, no_plot = false;
+};
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv);
+
+UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matching,
+                            const mortar::ContactSolverOptions& solver);
+mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver,
+                                            bool accelerate);
+
+// What a level is measured against: Hertz at the computed force, the exact solution of the
+// bilateral scene, or (partial) a reference solution two levels finer, stated as such.
+struct Reference {
+  std::string kind;  // "hertz", "exact" or "finer mesh"
+  std::unique_ptr<UnilateralLevel> finer;
+};
+Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact);
+
+mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
+                      const mortar::ManufacturedContact& exact);
+Hertz hertz_for(const Options& o, const UnilateralLevel& r);
+
+// One line of solvers.csv: a (matching, solver) pair on one level.
+struct SolverRun {
+  std::string matching, solver;
+  int level = 0;
+  double h = 0, time_s = 0, limit_s = 0, error = 0, total_force = 0;
+  int iterations = 0, columns = 0;
+};
+std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ManufacturedContact& exact,
+                                       const Reference& ref,
+                                       std::vector<std::unique_ptr<UnilateralLevel>>& finest_by_matching);
+void write_solver_runs(const std::string& path, const std::vector<SolverRun>& runs);
+
+}  // namespace chapter05

@@ -1,0 +1,40 @@
+#include "unilateral_level.hpp"
+
+#include "common/bilateral_contact.hpp"
+#include "common/dirichlet.hpp"
+#include "common/stopwatch.hpp"
+
+namespace chapter05 {
+
+UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
+                                       const mortar::ManufacturedContact& exact) {
+  UnilateralLevel r{mortar::make_two_bodies(setup.geometry, exact.material(0), exact.material(1)),
+                    {}, {}, {}, {}, {}, {}, {}, {}};
+  const mortar::Stopwatch clock;  // everything but the mesh
+  const UnilateralScene scene = make_scene(setup.scene, r.bodies, exact);
+  r.gap = scene.gap;
+  const mortar::SparseMatrix K = r.bodies.stiffness();
+  r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
+  r.constraints = mortar::build_constraints(r.bodies, r.gamma, setup.matching,
+                                            scene.data.prescribed_mask(r.bodies.num_dofs()));
+  const Eigen::VectorXd G = mortar::tested_gap(r.gamma, r.constraints, scene.gap);
+
+  // Dirichlet dofs leave the system; their values move into f and into the gap, G - B u_d.
+  const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene.data.F, scene.data.dirichlet);
+  const mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
+  r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
+  r.u = system.expand(r.solution.u);
+  r.time_s = clock.seconds();
+  r.limit_s = mortar::two_body_limit(r.bodies, scene.data);
+
+  r.pressure = mortar::contact_pressure(r.gamma, r.constraints, r.solution.lambda);
+  r.jump = mortar::normal_jump(r.bodies, r.gamma, r.u);
+  r.zone = mortar::contact_zone(r.pressure);
+  r.total_force = mortar::total_contact_force(r.gamma, r.constraints, r.solution.lambda);
+  const bool body1 = r.gamma.nonmortar == 0;
+  r.h1 = (body1 ? r.gamma.nonmortar_trace : r.gamma.mortar_trace).max_element_length();
+  r.h2 = (body1 ? r.gamma.mortar_trace : r.gamma.nonmortar_trace).max_element_length();
+  return r;
+}
+
+}  // namespace chapter05

@@ -1,0 +1,38 @@
+// One level of chapter 5: meshes, the scene, B and G of the chosen matching, Dirichlet
+// elimination, one contact solve, and what it says on Gamma_c.
+#pragma once
+
+#include "common/constraints.hpp"
+#include "common/contact_fields.hpp"
+#include "common/contact_solvers.hpp"
+#include "common/errors.hpp"
+#include "scenes.hpp"
+
+namespace chapter05 {
+
+struct UnilateralSetup {
+  mortar::TwoBodyGeometry geometry;
+  mortar::Matching matching = mortar::Matching::integral;
+  int nonmortar = 0;  // body index
+  mortar::ContactSolverOptions solver;
+  SceneParameters scene;
+};
+
+struct UnilateralLevel {
+  mortar::TwoBodies bodies;
+  mortar::ContactInterface gamma;
+  mortar::Constraints constraints;
+  mortar::ContactSolution solution;
+  Eigen::VectorXd u;  // both bodies, prescribed dofs included
+  mortar::InterfaceCurve pressure, jump;
+  mortar::ContactZone zone;
+  std::function<double(double)> gap;
+  double total_force = 0;
+  double time_s = 0, limit_s = 0;
+  double h1 = 0, h2 = 0;
+};
+
+UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
+                                       const mortar::ManufacturedContact& exact);
+
+}  // namespace chapter05
