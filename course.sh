@@ -8,7 +8,8 @@ cd "$(dirname "$0")"
 
 packages=(g++ cmake make libeigen3-dev libgsl-dev gnuplot-nox fonts-dejavu-core
           libsuitesparse-dev libopenblas0-pthread googletest libgtest-dev libgmock-dev)
-chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching)
+chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
+          ch05_unilateral_uzawa)
 jobs=$(nproc 2>/dev/null || echo 2)
 
 install_missing() {
@@ -34,14 +35,26 @@ build() {
   cmake --build "$dir" -j "$jobs"
 }
 
+# Further scenes shown in the lecture notes: "program|folder under figures/program|options"
+extra_runs=("ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare"
+            "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare")
+
 run_course() {
   build build
   for program in "${chapters[@]}"; do
     echo "== $program"
     "./build/$program" --out "results/$program"
     mkdir -p "figures/$program"
-    rm -f "figures/$program"/*.png
+    rm -rf "figures/$program"/*
     cp "results/$program"/*.png "figures/$program/"
+  done
+  for run in "${extra_runs[@]}"; do
+    IFS='|' read -r program name options <<< "$run"
+    echo "== $program $options"
+    # shellcheck disable=SC2086
+    "./build/$program" $options --out "results/${program}_$name"
+    mkdir -p "figures/$program/$name"
+    cp "results/${program}_$name"/*.png "figures/$program/$name/"
   done
   echo "Figures refreshed in figures/, full output in results/."
 }

@@ -63,4 +63,19 @@ SceneData patch_test_scene(const TwoBodies& bodies, double pressure) {
   return scene;
 }
 
+SceneData pressed_between_plates(const TwoBodies& bodies, double delta) {
+  SceneData scene;
+  scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());
+  const auto hold = [&](int l, Side side, const Eigen::Vector2d& value) {
+    for (int a : bodies.body(l).mesh.nodes_on(side))
+      for (int c = 0; c < 2; ++c) {
+        scene.dirichlet.dofs.push_back(bodies.dof(l, a, c));
+        scene.dirichlet.values.push_back(value[c]);
+      }
+  };
+  hold(0, Side::top, Eigen::Vector2d(0, -delta));
+  hold(1, Side::bottom, Eigen::Vector2d(0, 0));
+  return scene;
+}
+
 }  // namespace mortar

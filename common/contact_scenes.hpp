@@ -25,4 +25,8 @@ SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact&
 // move in y: only the contact constraints hold it, so K alone is singular here.
 SceneData patch_test_scene(const TwoBodies& bodies, double pressure);
 
+// Two bodies pressed between plates (chapter 5): the top of body 1 moved by (0, -delta), the
+// bottom of body 2 clamped, the lateral sides free, no load. The contact decides the rest.
+SceneData pressed_between_plates(const TwoBodies& bodies, double delta);
+
 }  // namespace mortar

@@ -181,3 +181,53 @@ TEST(Programs, ch04_energy_rate_is_one_for_nonnested_and_nested_ratios) {
     EXPECT_GE(summary_value(dir, "rates", "err_pressure"), 0.9) << "h2/h1 = " << ratio;
   }
 }
+
+TEST(Programs, ch05_refuses_bad_input_with_status_2) {
+  expect_refused(CH05, "--scene moon", "scene");
+  expect_refused(CH05, "--matching glue", "matching");
+  expect_refused(CH05, "--solver newton", "solver");
+  expect_refused(CH05, "--acceleration heavy", "acceleration");
+  expect_refused(CH05, "--rho -1", "rho");
+  expect_refused(CH05, "--tol 0", "tol");
+  expect_refused(CH05, "--tol 1", "tol");
+  expect_refused(CH05, "--R 0", "R");
+  expect_refused(CH05, "--delta nan", "delta");
+  expect_refused(CH05, "--E1 -2", "E1");
+  expect_refused(CH05, "--nu2 0.5", "nu2");
+  expect_refused(CH05, "--n0 0", "n0");
+  expect_refused(CH05, "--h-ratio 0", "h-ratio");
+  expect_refused(CH05, "--levels 2", "levels");
+  expect_refused(CH05, "--n0 4096 --levels 8", "levels");
+  expect_refused(CH05, "--out /proc/none", "out");
+}
+
+TEST(Programs, ch05_hertz_both_solvers_agree_and_report_every_key) {
+  const std::string dp = out_dir("ch05_pdas"), du = out_dir("ch05_uzawa");
+  const ProgramRun p = run(std::string(CH05) + " --quick --no-compare --no-plot --solver pdas --out " + dp);
+  const ProgramRun u = run(std::string(CH05) + " --quick --no-compare --no-plot --solver uzawa --out " + du);
+  ASSERT_EQ(p.status, 0) << p.output;
+  ASSERT_EQ(u.status, 0) << u.output;
+  const double fp = summary_value(dp, "results", "total_force"), fu = summary_value(du, "results", "total_force");
+  EXPECT_GT(fp, 0.0);
+  EXPECT_NEAR(fu, fp, 1e-5 * fp);
+  for (const char* key : {"contact_half_width", "max_pressure", "iterations", "complementarity_residual",
+                          "hertz_half_width_rel_error", "hertz_peak_pressure_rel_error", "limit_ratio"})
+    EXPECT_TRUE(std::isfinite(summary_value(dp, "results", key))) << key;
+  EXPECT_LE(summary_value(du, "results", "complementarity_residual"), 1e-8);
+  EXPECT_TRUE(std::filesystem::exists(dp + "/contact.csv"));
+}
+
+TEST(Programs, ch05_rho_too_large_is_reported_with_status_1) {
+  const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --solver uzawa --rho 1e6 --out " +
+                           out_dir("ch05_rho"));
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("Uzawa diverges"), std::string::npos) << r.output;
+}
+
+TEST(Programs, ch05_grazing_contact_has_zero_force) {
+  const std::string dir = out_dir("ch05_grazing");
+  const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --delta 0 --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(summary_value(dir, "results", "total_force"), 0.0);
+  EXPECT_EQ(summary_value(dir, "results", "contact_half_width"), 0.0);
+}

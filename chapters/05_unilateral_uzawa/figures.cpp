@@ -11,6 +11,18 @@ using mortar::Figure;
 using mortar::Series;
 
 namespace {
+// What each error column measures, in words (gnuplot would read "_" as a subscript).
+std::string describe(const std::string& column) {
+  if (column == "err_energy") return "u, broken energy norm";
+  if (column == "err_l2") return "u, L^2";
+  if (column == "err_pressure") return "pressure, L^2(Gamma_c)";
+  if (column == "err_jump") return "jump [u.n], L^2(Gamma_c)";
+  if (column == "err_peak_pressure") return "peak pressure against Hertz";
+  if (column == "err_half_width") return "half-width against Hertz";
+  if (column == "err_total_force") return "total force against the reference";
+  return column;
+}
+
 double at(const mortar::InterfaceCurve& c, double x) {
   mortar::InterfaceTrace t;
   t.x = c.x;
@@ -36,7 +48,7 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
   fig.title = "contact pressure on the finest mesh, scene " + o.scene;
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "contact pressure p [Pa]";
-  fig.key = "top right";
+  fig.key = "top left";
   Series truth{"", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
   const UnilateralLevel& first = *levels.front();
   for (int i = 0; i <= 1000; ++i) {
@@ -88,7 +100,7 @@ void plot_contact_state(const std::string& folder, const UnilateralLevel& r, boo
 
 void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run) {
   Figure fig;
-  fig.title = "errors against h (chosen matching and solver)";
+  fig.title = "relative errors against h (chosen matching and solver)";
   fig.xlabel = "h = max(h1, h2) [m]";
   fig.ylabel = "relative error [-]";
   fig.log_x = fig.log_y = true;
@@ -100,7 +112,7 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
     if (name.rfind("err_", 0) == 0) {
       std::vector<double> e = table.column(name);
       for (double& v : e) v = std::max(v, 1e-16);
-      fig.series.push_back({name, h, e, "linespoints", std::string(markers[k++ % 4]) + " lw 2"});
+      fig.series.push_back({describe(name), h, e, "linespoints", std::string(markers[k++ % 4]) + " lw 2"});
     }
   fig.slopes.push_back({1.0, 0, 0.5, "slope 1"});
   fig.slopes.push_back({0.25, 0, 0.8, "slope 1/4 (Theorem 5.1)"});
@@ -110,7 +122,7 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
 void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,
                             const std::string& error_name, bool run) {
   Figure iterations, timing;
-  iterations.title = "iterations to the tolerance against h";
+  iterations.title = "iterations to reach the complementarity tolerance, against h";
   iterations.xlabel = "h = max(h1, h2) [m]";
   iterations.ylabel = "iterations [-]";
   iterations.log_x = iterations.log_y = true;
@@ -118,7 +130,7 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
   iterations.width = 1200;
   timing.title = "error against wall time, every solver, both matchings";
   timing.xlabel = "wall time of the level [s]";
-  timing.ylabel = error_name + " [-]";
+  timing.ylabel = "relative error: " + describe(error_name) + " [-]";
   timing.log_x = timing.log_y = true;
   timing.key = "outside right top";
   timing.width = 1200;

@@ -1,0 +1,159 @@
+// Unilateral contact solvers on small two-body problems: the answers satisfy the
+// complementarity conditions, both solvers agree, and the hard cases give clear results.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/bilateral_contact.hpp"
+#include "common/contact_fields.hpp"
+#include "common/contact_solvers.hpp"
+
+using namespace mortar;
+
+namespace {
+struct Built {
+  TwoBodies bodies;
+  Constraints constraints;
+  ContactInterface gamma;
+  ContactProblem problem;
+  ReducedSystem system;
+};
+
+// Two bodies pressed together by delta, gap (x - 1/2)^2 / 2: a Hertz-like contact.
+Built pressed(int n1, double ratio, double delta, Matching m, double E2 = 1, double shift = 0) {
+  TwoBodyGeometry g;
+  g.n1 = n1;
+  g.m1 = n1;
+  g.n2 = std::max(2, static_cast<int>(std::lround(n1 / ratio)));
+  g.m2 = g.n2;
+  g.H1 = g.H2 = 1;
+  TwoBodies bodies = make_two_bodies(g, Material(1, 0.3), Material(E2, 0.3));
+  if (shift != 0) {  // move body 2's interior trace nodes by +-shift
+    Mesh mesh = bodies.body(1).mesh;
+    const auto& top = mesh.nodes_on(Side::top);
+    for (std::size_t i = 1; i + 1 < top.size(); ++i) mesh.nodes[top[i]].x() += (i % 2 ? shift : -shift);
+    bodies = TwoBodies(bodies.body(0), {mesh, bodies.body(1).material});
+  }
+  const SceneData scene = pressed_between_plates(bodies, delta);
+  ContactInterface gamma = make_interface(bodies, 0);
+  Constraints c = build_constraints(bodies, gamma, m, scene.prescribed_mask(bodies.num_dofs()));
+  const Eigen::VectorXd G = tested_gap(gamma, c, [](double x) { return (x - 0.5) * (x - 0.5) / 2; });
+  ReducedSystem system = eliminate_dirichlet(bodies.stiffness(), scene.F, scene.dirichlet);
+  const SaddlePointProblem p = reduce_to_free_dofs(system, c, G);
+  return {std::move(bodies), std::move(c), std::move(gamma), {p.K, p.f, p.B, p.G}, std::move(system)};
+}
+
+ContactSolverOptions with(ContactSolverKind kind, bool accelerate = true) {
+  ContactSolverOptions o;
+  o.kind = kind;
+  o.accelerate = accelerate;
+  o.tol = 1e-10;
+  return o;
+}
+
+// lambda >= 0, B u <= G, lambda (G - B u) = 0 and K u + B^T lambda = f, to tolerance
+void expect_kkt(const ContactProblem& p, const ContactSolution& s, const std::string& what) {
+  const Eigen::VectorXd gap = p.G - p.B * s.u;
+  const double gscale = std::max(1e-300, gap.cwiseAbs().maxCoeff());
+  const double lscale = std::max(1e-300, s.lambda.cwiseAbs().maxCoeff());
+  EXPECT_GE(s.lambda.minCoeff(), 0.0) << what;
+  EXPECT_GE(gap.minCoeff(), -1e-8 * gscale) << what;
+  for (Eigen::Index i = 0; i < gap.size(); ++i)
+    EXPECT_LT(std::fabs(s.lambda[i] * gap[i]), 1e-8 * lscale * gscale) << what << ", row " << i;
+  EXPECT_LT((p.K * s.u + p.B.transpose() * s.lambda - p.f).norm(), 1e-8 * p.f.norm() + 1e-12) << what;
+}
+}  // namespace
+
+TEST(ContactSolvers, pdas_and_uzawa_satisfy_complementarity_and_agree) {
+  for (Matching m : {Matching::integral, Matching::pointwise}) {
+    const Built b = pressed(24, 1.5, 0.02, m);
+    const ContactSolution pd = solve_contact(b.problem, with(ContactSolverKind::pdas));
+    const ContactSolution uz = solve_contact(b.problem, with(ContactSolverKind::uzawa));
+    const ContactSolution plain = solve_contact(b.problem, with(ContactSolverKind::uzawa, false));
+    expect_kkt(b.problem, pd, "pdas " + matching_name(m));
+    expect_kkt(b.problem, uz, "uzawa " + matching_name(m));
+    const double force = total_contact_force(b.gamma, b.constraints, pd.lambda);
+    EXPECT_GT(force, 0.0);
+    EXPECT_NEAR(total_contact_force(b.gamma, b.constraints, uz.lambda), force, 1e-7 * force);
+    EXPECT_NEAR(total_contact_force(b.gamma, b.constraints, plain.lambda), force, 1e-7 * force);
+    EXPECT_LE(pd.residual, 1e-10);
+    EXPECT_LE(uz.residual, 1e-10);
+    // some rows separate, some touch: a real contact problem
+    EXPECT_GT((pd.lambda.array() == 0).count(), 0);
+    EXPECT_GT((pd.lambda.array() > 0).count(), 0);
+  }
+}
+
+TEST(ContactSolvers, plain_uzawa_needs_more_iterations_as_h_shrinks_and_pdas_does_not) {
+  const Built coarse = pressed(12, 1.5, 0.02, Matching::integral), fine = pressed(48, 1.5, 0.02, Matching::integral);
+  const int u1 = solve_contact(coarse.problem, with(ContactSolverKind::uzawa, false)).iterations;
+  const int u2 = solve_contact(fine.problem, with(ContactSolverKind::uzawa, false)).iterations;
+  const int p2 = solve_contact(fine.problem, with(ContactSolverKind::pdas)).iterations;
+  EXPECT_GT(u2, 2 * u1) << "plain Uzawa: " << u1 << " then " << u2 << " iterations";
+  EXPECT_LT(p2, 20);
+}
+
+TEST(ContactSolvers, grazing_contact_gives_zero_force_and_an_empty_active_set) {
+  for (ContactSolverKind kind : {ContactSolverKind::pdas, ContactSolverKind::uzawa}) {
+    const Built b = pressed(12, 1.5, 0.0, Matching::integral);  // the bodies just touch at x = 1/2
+    const ContactSolution s = solve_contact(b.problem, with(kind));
+    EXPECT_TRUE(s.lambda.allFinite());
+    EXPECT_EQ(s.lambda.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_LT(s.u.cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_EQ(s.residual, 0.0);
+  }
+}
+
+TEST(ContactSolvers, uzawa_with_rho_too_large_fails_loudly) {
+  const Built b = pressed(12, 1.5, 0.02, Matching::integral);
+  ContactSolverOptions o = with(ContactSolverKind::uzawa, false);
+  const double S_norm = solve_contact(b.problem, with(ContactSolverKind::pdas)).S_norm;
+  o.rho = 10.0 / S_norm;  // five times the stability limit 2 / ||S||
+  try {
+    solve_contact(b.problem, o);
+    ADD_FAILURE() << "Uzawa with rho = 10 / ||S|| did not fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Uzawa diverges"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ContactSolvers, unilateral_equals_bilateral_when_contact_is_everywhere) {
+  TwoBodyGeometry g;
+  g.n1 = 12; g.m1 = 6; g.n2 = 8; g.m2 = 4;
+  const ManufacturedContact exact(Material(1, 0.3), Material(3, 0.25), 1.0);
+  const TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
+  const SceneData scene = manufactured_scene(bodies, exact);
+  const BilateralSolution bi = solve_bilateral(bodies, scene, {Matching::integral, 0, SaddleSolver::lu, fastest_spd_backend()});
+  const ReducedSystem system = eliminate_dirichlet(bodies.stiffness(), scene.F, scene.dirichlet);
+  const SaddlePointProblem p = reduce_to_free_dofs(system, bi.constraints, Eigen::VectorXd::Zero(bi.constraints.B.rows()));
+  const ContactSolution uni = solve_contact({p.K, p.f, p.B, p.G}, with(ContactSolverKind::pdas));
+  EXPECT_LT((system.expand(uni.u) - bi.u).norm(), 1e-9 * bi.u.norm());
+  EXPECT_LT((uni.lambda - bi.lambda).norm(), 1e-8 * bi.lambda.norm());
+  EXPECT_EQ((uni.lambda.array() > 0).count(), uni.lambda.size()) << "every multiplier active";
+}
+
+TEST(ContactSolvers, hard_cases_give_a_clear_answer) {
+  // stiffness ratios 1e-6 .. 1e6 and mesh ratios 1/10 .. 10, both solvers, both matchings
+  for (double E2 : {1e-6, 1.0, 1e6})
+    for (double ratio : {0.1, 1.5, 10.0})
+      for (Matching m : {Matching::integral, Matching::pointwise}) {
+        const Built b = pressed(16, ratio, 0.02, m, E2);
+        const ContactSolution pd = solve_contact(b.problem, with(ContactSolverKind::pdas));
+        const ContactSolution uz = solve_contact(b.problem, with(ContactSolverKind::uzawa));
+        const std::string what = "E2 " + std::to_string(E2) + ", ratio " + std::to_string(ratio) + ", " + matching_name(m);
+        expect_kkt(b.problem, pd, "pdas, " + what);
+        const double f1 = total_contact_force(b.gamma, b.constraints, pd.lambda);
+        const double f2 = total_contact_force(b.gamma, b.constraints, uz.lambda);
+        EXPECT_GT(f1, 0.0) << what;
+        EXPECT_NEAR(f2, f1, 1e-6 * f1) << what;
+      }
+}
+
+TEST(ContactSolvers, nearly_coincident_trace_nodes_change_nothing) {
+  const Built matching = pressed(16, 1.0, 0.02, Matching::integral);
+  const Built near = pressed(16, 1.0, 0.02, Matching::integral, 1.0, 1e-14);
+  const ContactSolution a = solve_contact(matching.problem, with(ContactSolverKind::pdas));
+  const ContactSolution b = solve_contact(near.problem, with(ContactSolverKind::pdas));
+  ASSERT_EQ(a.lambda.size(), b.lambda.size());
+  EXPECT_LT((a.lambda - b.lambda).norm(), 1e-8 * a.lambda.norm());
+}
