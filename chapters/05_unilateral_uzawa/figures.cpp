@@ -48,7 +48,8 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
   fig.title = "contact pressure on the finest mesh, scene " + o.scene;
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "contact pressure p [Pa]";
-  fig.key = "top left";
+  fig.key = "outside below maxrows 3";
+  fig.height = 720;
   Series truth{"", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
   const UnilateralLevel& first = *levels.front();
   for (int i = 0; i <= 1000; ++i) {
