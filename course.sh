@@ -65,6 +65,25 @@ run_tests() {
   # The readable fallback: the same solver tests in a build without CHOLMOD.
   build build-fallback -DMORTAR_USE_CHOLMOD=OFF
   ctest --test-dir build-fallback --output-on-failure -j "$jobs" -R 'SpdSolver|Dirichlet|Programs.ch02'
+  check_skeletons_fail
+}
+
+# Every untouched exercise skeleton must fail its test (the solutions pass in the main run).
+check_skeletons_fail() {
+  cmake -S . -B build-skeleton -DCMAKE_BUILD_TYPE=Release -DMORTAR_EXERCISES=skeleton > /dev/null
+  cmake --build build-skeleton -j "$jobs" --target exercises
+  local bad=0
+  for folder in exercises/[0-9][0-9]_*/; do
+    local name
+    name=$(basename "$folder")
+    if ctest --test-dir build-skeleton -L exercises -R "^${name}\." > /dev/null 2>&1; then
+      echo "exercise $name: the untouched skeleton passes its test" >&2
+      bad=1
+    else
+      echo "exercise $name: the untouched skeleton fails its test, as it should"
+    fi
+  done
+  return $bad
 }
 
 case "${1:-}" in

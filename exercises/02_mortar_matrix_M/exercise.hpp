@@ -1,0 +1,13 @@
+// Exercise 2: the mixed mass matrix of two grids, computed on their merged grid.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace exercise {
+
+// P(j, k) = int_{Gamma_c} phi^1_j phi^2_k for the P1 hats of the sorted grids x1 and x2
+// (same end points). With psi = C phi^1 (exercise 3), the mortar matrix is M = C P.
+Eigen::MatrixXd mixed_mass(const std::vector<double>& x1, const std::vector<double>& x2);
+
+}  // namespace exercise

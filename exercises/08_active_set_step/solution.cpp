@@ -1,0 +1,28 @@
+#include "exercise.hpp"
+
+namespace exercise {
+
+std::vector<int> next_active_set(const Eigen::VectorXd& lambda, const Eigen::VectorXd& gap, double c) {
+  std::vector<int> active;
+  for (Eigen::Index i = 0; i < lambda.size(); ++i)
+    if (lambda[i] - c * gap[i] > 0) active.push_back(static_cast<int>(i));
+  return active;
+}
+
+Eigen::VectorXd solve_on_active_set(const Eigen::MatrixXd& S, const Eigen::VectorXd& b,
+                                    const std::vector<int>& active) {
+  const int a = static_cast<int>(active.size());
+  Eigen::MatrixXd S_AA(a, a);
+  Eigen::VectorXd b_A(a);
+  for (int r = 0; r < a; ++r) {
+    b_A[r] = b[active[r]];
+    for (int s = 0; s < a; ++s) S_AA(r, s) = S(active[r], active[s]);
+  }
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(b.size());
+  if (a == 0) return lambda;
+  const Eigen::VectorXd l_A = S_AA.ldlt().solve(b_A);
+  for (int r = 0; r < a; ++r) lambda[active[r]] = l_A[r];
+  return lambda;
+}
+
+}  // namespace exercise
