@@ -66,6 +66,9 @@ run_tests() {
   build build-fallback -DMORTAR_USE_CHOLMOD=OFF
   ctest --test-dir build-fallback --output-on-failure -j "$jobs" -R 'SpdSolver|Dirichlet|Programs.ch02'
   check_skeletons_fail
+  # The unit tests once more under AddressSanitizer and UndefinedBehaviorSanitizer.
+  build build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORTAR_SANITIZE=ON
+  ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L unit
 }
 
 # Every untouched exercise skeleton must fail its test (the solutions pass in the main run).

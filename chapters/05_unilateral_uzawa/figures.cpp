@@ -129,16 +129,16 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
   iterations.log_x = iterations.log_y = true;
   iterations.key = "outside right top";
   iterations.width = 1200;
-  timing.title = "error against wall time, every solver, both matchings";
+  timing.title = "error against wall time: solvers, matchings, sparse Cholesky";
   timing.xlabel = "wall time of the level [s]";
   timing.ylabel = "relative error: " + describe(error_name) + " [-]";
   timing.log_x = timing.log_y = true;
   timing.key = "outside right top";
   timing.width = 1200;
-  const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'"};
+  const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'", "'#2ca02c'"};
   int k = 0;
   for (const std::string matching : {"integral", "pointwise"})
-    for (const std::string solver : {"pdas", "uzawa-nesterov", "uzawa"}) {
+    for (const std::string solver : {"pdas", "uzawa-nesterov", "uzawa", "pdas-simplicial-ldlt"}) {
       Series it{matching + ", " + solver, {}, {}, "linespoints", ""}, tm = it;
       for (const SolverRun& r : runs)
         if (r.matching == matching && r.solver == solver) {
@@ -147,10 +147,10 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
           tm.x.push_back(r.time_s);
           tm.y.push_back(std::max(r.error, 1e-16));
         }
-      const std::string style = std::string("lw 2 lc rgb ") + colours[k % 3] +
+      const std::string style = std::string("lw 2 lc rgb ") + colours[k % 4] +
                                 (matching == "integral" ? " pt 7" : " pt 6 dt 2");
       it.extra = tm.extra = style;
-      iterations.series.push_back(it);
+      if (solver != "pdas-simplicial-ldlt") iterations.series.push_back(it);  // same count as pdas
       timing.series.push_back(tm);
       ++k;
     }

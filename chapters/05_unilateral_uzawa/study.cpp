@@ -162,23 +162,32 @@ std::vector<SolverRun> compare_solvers(const Options& o, const mortar::Manufactu
   struct Variant {
     std::string label, solver;
     bool accelerate;
+    mortar::SpdBackend backend;
   };
-  const Variant variants[] = {{"pdas", "pdas", true}, {"uzawa-nesterov", "uzawa", true}, {"uzawa", "uzawa", false}};
+  // The same answer four ways: the active set, Uzawa with and without momentum (all on the
+  // fastest Cholesky), and the active set on Eigen's readable SimplicialLDLT.
+  const mortar::SpdBackend fast = mortar::fastest_spd_backend(), readable = mortar::SpdBackend::simplicial_ldlt;
+  const Variant variants[] = {{"pdas", "pdas", true, fast},
+                              {"uzawa-nesterov", "uzawa", true, fast},
+                              {"uzawa", "uzawa", false, fast},
+                              {"pdas-simplicial-ldlt", "pdas", true, readable}};
   std::vector<SolverRun> runs;
   finest_by_matching.clear();
   for (const std::string matching : {"integral", "pointwise"}) {
     std::unique_ptr<UnilateralLevel> finest;
     for (int level = 0; level < o.levels; ++level)
       for (const Variant& v : variants) {
-        auto r = std::make_unique<UnilateralLevel>(solve_unilateral_level(
-            level_setup(o, level, mortar::parse_matching(matching), solver_options(o, v.solver, v.accelerate)), exact));
+        mortar::ContactSolverOptions solver = solver_options(o, v.solver, v.accelerate);
+        solver.backend = v.backend;
+        auto r = std::make_unique<UnilateralLevel>(
+            solve_unilateral_level(level_setup(o, level, mortar::parse_matching(matching), solver), exact));
         const mortar::Row row = level_row(o, *r, ref, exact);
         SolverRun run{matching, v.label, level, std::max(r->h1, r->h2), r->time_s, r->limit_s, 0,
                       r->total_force, r->solution.iterations, r->solution.columns};
         for (const auto& [name, value] : row)
           if (name == (ref.kind == "exact" ? "err_energy" : "err_pressure")) run.error = value;
         runs.push_back(run);
-        std::printf("compare: %-9s %-15s level %d  iterations %6d  columns %4d  time %.3f s  error %.3e\n",
+        std::printf("compare: %-9s %-20s level %d  iterations %6d  columns %4d  time %.3f s  error %.3e\n",
                     matching.c_str(), v.label.c_str(), level, run.iterations, run.columns, run.time_s, run.error);
         if (level == o.levels - 1 && v.label == "pdas") finest = std::move(r);
       }
