@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "common/stopwatch.hpp"
@@ -11,9 +12,23 @@ namespace mortar {
 namespace {
 constexpr long long max_dofs = 12'000'000;  // beyond this the machine runs out of memory
 
-long long estimated_dofs(const BilateralStudyOptions& o) {
-  const TwoBodyGeometry g = level_geometry(o, o.levels - 1);
-  return 2LL * (g.n1 + 1) * (g.m1 + 1) + 2LL * (g.n2 + 1) * (g.m2 + 1);
+constexpr double max_cells_per_side = 1 << 16;
+
+// Cells along and across each body at the finest level, in floating point so that absurd
+// heights or aspects cannot wrap an int before they are checked.
+struct FinestSize {
+  double n1, m1, n2, m2;
+  double dofs() const { return 2 * (n1 + 1) * (m1 + 1) + 2 * (n2 + 1) * (m2 + 1); }
+  double largest() const { return std::max({n1, m1, n2, m2}); }
+};
+
+FinestSize finest_size(const BilateralStudyOptions& o) {
+  FinestSize s;
+  s.n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  s.n2 = std::max(2.0, std::round(s.n1 / o.h_ratio));
+  s.m1 = std::max(1.0, std::round(o.aspect * s.n1 * o.H1 / o.L));
+  s.m2 = std::max(1.0, std::round(o.aspect * s.n2 * o.H2 / o.L));
+  return s;
 }
 }  // namespace
 
@@ -41,9 +56,15 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
     o.n0 = 6;
     o.levels = 3;
   }
-  if ((static_cast<long long>(o.n0) << (o.levels - 1)) > (1 << 16) || estimated_dofs(o) > max_dofs)
-    parser.fail("levels", "the finest level would have about " + std::to_string(estimated_dofs(o)) +
-                              " dofs, more than " + std::to_string(max_dofs));
+  const FinestSize size = finest_size(o);
+  if (size.largest() > max_cells_per_side || size.dofs() > static_cast<double>(max_dofs)) {
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "the finest level would have %.3g dofs and up to %.3g cells along a side "
+                  "(limits %.3g and %.3g; check also --L, --H1, --H2, --aspect)",
+                  size.dofs(), size.largest(), static_cast<double>(max_dofs), max_cells_per_side);
+    parser.fail("levels", message);
+  }
   prepare_output_folder(parser, o.out);
 }
 

@@ -103,6 +103,7 @@ ContactZone contact_zone(const InterfaceCurve& p) {
       if (first < 0) first = i;
       last = i;
       ++z.active_nodes;
+      if (i > 0 && p.value[i - 1] > 0) ++z.active_elements;
     }
   if (first < 0) return z;
   z.empty = false;

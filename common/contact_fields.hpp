@@ -46,6 +46,7 @@ struct ContactZone {
   double left_active = 0, right_active = 0;      // outermost nodes in contact
   double left_inactive = 0, right_inactive = 0;  // their first neighbours out of contact
   int active_nodes = 0;
+  int active_elements = 0;  // elements of the trace with p > 0 at both ends
   double half_width() const;  // 0 when empty
   // Does the zone [centre - a, centre + a] have its edges between active and inactive nodes?
   bool brackets(double centre, double a) const;

@@ -123,10 +123,13 @@ ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_n
   sol.rho = o.rho > 0 ? o.rho : 1.0 / S_norm;
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), previous = lambda;
   double t = 1, best = std::numeric_limits<double>::infinity();
-  // A step rho > 2 / ||S|| makes the iteration blow up or cycle; either way the residual stops
-  // falling. Every `window` iterations it must have dropped below 90% of what it was.
-  constexpr int window = 1000;
-  double window_start = std::numeric_limits<double>::infinity();
+  // rho above 2 / ||S|| cannot converge: refuse it before iterating. (||S|| is a power-
+  // iteration estimate, from below; a rho just under the true limit is caught by the
+  // blow-up test in the loop instead.)
+  if (sol.rho * S_norm >= 2.0)
+    throw std::runtime_error("Uzawa diverges for rho = " + format(sol.rho) +
+                             ": rho must stay below 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm) +
+                             " (leave --rho at 0 to choose it automatically)");
   for (int k = 1; k <= o.max_iterations; ++k) {
     // Nesterov: step from the extrapolated point y, not from lambda itself
     const double t_next = 0.5 * (1 + std::sqrt(1 + 4 * t * t));
@@ -137,15 +140,13 @@ ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_n
     const Eigen::VectorXd gap = S.apply(lambda) - S.b();  // G - B u
     sol.residual = complementarity_residual(lambda, gap, sc.d, sc.lambda);
     sol.iterations = k;
-    const bool blows_up = !std::isfinite(sol.residual) || sol.residual > 1e6 * std::max(best, 1.0);
-    const bool stalls = k % window == 0 && sol.residual > 0.9 * window_start;
-    if (blows_up || stalls)
+    // Slow is not divergent: plain Uzawa on a badly conditioned S creeps for 1e5 steps. Only a
+    // residual that is no longer finite or has grown a millionfold means divergence.
+    if (!std::isfinite(sol.residual) || sol.residual > 1e6 * std::max(best, 1.0))
       throw std::runtime_error(
           "Uzawa diverges: after " + std::to_string(k) + " iterations the complementarity "
-          "residual is " + format(sol.residual) + (stalls ? " and no longer falls" : " and growing") +
-          ", with rho = " + format(sol.rho) + "; rho must stay below 2 / ||B K^{-1} B^T|| = " +
-          format(2.0 / S_norm) + " (leave --rho at 0 to choose it automatically)");
-    if (k % window == 0) window_start = sol.residual;
+          "residual has grown to " + format(sol.residual) + ", with rho = " + format(sol.rho) +
+          " against an estimated limit 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm));
     best = std::min(best, sol.residual);
     if (sol.residual <= o.tol) {
       sol.lambda = lambda;

@@ -112,7 +112,7 @@ TEST(Programs, ch03_and_ch04_refuse_malformed_input) {
       {"--nu2 1", "nu2"}, {"--h-ratio 0", "h-ratio"}, {"--h-ratio -3/2", "h-ratio"},
       {"--h-ratio inf", "h-ratio"}, {"--nonmortar 3", "nonmortar"}, {"--nonmortar 0", "nonmortar"},
       {"--n0 4096 --levels 6", "levels"}, {"--saddle-solver cg", "saddle-solver"}, {"--aspect 0", "aspect"},
-      {"--H1 -1", "H1"}};
+      {"--H1 -1", "H1"}, {"--L 1e-6 --H1 536.870912 --H2 858.9934592 --n0 2", "levels"}};
   expect_all_refused(CH03, common_bad_inputs(), own);
   expect_all_refused(CH04, common_bad_inputs(), own);
 }
@@ -215,4 +215,15 @@ TEST(Programs, ch05_grazing_contact_has_zero_force) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(summary_value(dir, "results", "total_force"), 0.0);
   EXPECT_EQ(summary_value(dir, "results", "contact_half_width"), 0.0);
+}
+
+// A stiff body on a soft one makes S badly conditioned: plain Uzawa needs about 2e5 steps at
+// the third level. Slow is not divergent: the run must finish, not report divergence.
+TEST(Programs, ch05_plain_uzawa_on_a_stiffness_ratio_of_1e6_converges) {
+  const std::string dir = out_dir("ch05_stiff");
+  const ProgramRun r = run(std::string(CH05) +
+                           " --E2 1e-6 --solver uzawa --acceleration none --levels 3 --no-compare --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_LE(summary_value(dir, "results", "complementarity_residual"), 1e-8);
+  EXPECT_GT(summary_value(dir, "results", "iterations"), 1e4);
 }
