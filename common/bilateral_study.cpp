@@ -32,9 +32,7 @@ FinestSize finest_size(const BilateralStudyOptions& o) {
 }
 }  // namespace
 
-void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv) {
-  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
-  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
+void add_two_body_options(OptionParser& parser, TwoBodyOptions& o) {
   parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)",
                     Range::closed(0.01, 100));
   parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, which carries the multipliers (1 or 2)", Range::closed(1, 2));
@@ -45,8 +43,14 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
   parser.add_double("H1", o.H1, "height of body 1 [m]", Range::closed(1e-6, 1e6));
   parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
-  parser.add_double("aspect", o.aspect, "cell width / cell height (20 for 1:20 cells)", Range::closed(0.05, 20));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
+}
+
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv) {
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
+  add_two_body_options(parser, o);
+  parser.add_double("aspect", o.aspect, "cell width / cell height (20 for 1:20 cells)", Range::closed(0.05, 20));
   parser.add_choice("saddle-solver", o.saddle_solver, {"elimination", "lu"}, "saddle-point solver");
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3)");

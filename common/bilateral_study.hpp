@@ -15,15 +15,20 @@
 
 namespace mortar {
 
-struct BilateralStudyOptions {
-  int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
-  int levels = 6;
+// The options every two-body chapter (3, 4, 5) shares: meshes along Gamma_c, materials, sizes.
+struct TwoBodyOptions {
   double h_ratio = 1.5;  // h2 / h1
   int nonmortar = 1;     // 1 or 2, as the user counts bodies
   double E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25;
   double L = 1, H1 = 0.5, H2 = 0.5;
-  double aspect = 1;  // cell width / cell height
   double jitter = 0;
+};
+void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
+
+struct BilateralStudyOptions : TwoBodyOptions {
+  int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
+  int levels = 6;
+  double aspect = 1;  // cell width / cell height
   std::string saddle_solver = "elimination";
   std::string out;
   bool quick = false;

@@ -153,19 +153,7 @@ Eigen::MatrixXd SpdSolver::solve_many(const Eigen::MatrixXd& rhs) const {
 }
 
 Eigen::VectorXd SpdSolver::solve(const Eigen::VectorXd& rhs) const {
-  if (!impl_->factorized) throw std::logic_error("SpdSolver::solve called before factorize");
-  if (rhs.size() != impl_->size)
-    throw std::invalid_argument("SpdSolver::solve: rhs has " + std::to_string(rhs.size()) +
-                                " entries, K has " + std::to_string(impl_->size) + " rows");
-  Eigen::VectorXd x;
-#ifdef MORTAR_HAVE_CHOLMOD
-  if (backend_ == SpdBackend::cholmod) x = impl_->cholmod.solve(rhs);
-  else x = impl_->ldlt.solve(rhs);
-#else
-  x = impl_->ldlt.solve(rhs);
-#endif
-  if (!x.allFinite()) throw std::runtime_error("SpdSolver: the solve produced non-finite values");
-  return x;
+  return solve_many(rhs);  // one right-hand side is a matrix of one column
 }
 
 }  // namespace mortar

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bilateral_study.hpp"
 #include "common/convergence_study.hpp"
 #include "common/options.hpp"
 #include "hertz.hpp"
@@ -13,17 +14,19 @@
 
 namespace chapter05 {
 
-struct Options {
+struct Options : mortar::TwoBodyOptions {
+  Options() {  // chapter 5's bodies: one material, square blocks
+    E2 = 1;
+    nu2 = 0.3;
+    H1 = H2 = 1;
+  }
   std::string scene = "hertz";
   std::string matching = "integral";
   std::string solver = "pdas";
   std::string acceleration = "nesterov";
   double rho = 0, tol = 1e-8;
-  int n0 = 12, levels = 5, nonmortar = 1;
-  double h_ratio = 1.5;
-  double E1 = 1, nu1 = 0.3, E2 = 1, nu2 = 0.3;
-  double L = 1, H1 = 1, H2 = 1, R = 1, delta = 0.02;
-  double jitter = 0;
+  int n0 = 12, levels = 5;
+  double R = 1, delta = 0.02;
   bool compare = true;
   std::string out = "results/ch05_unilateral_uzawa";
   bool quick = false, no_plot = false;
