@@ -97,11 +97,15 @@ Sweep sweep_ratios(const Options& o) {
     for (const auto& [label, ratio] : ratios) {
       chapter01::IntegralCurve curve{"h2/h1 = " + label, {}, {}, {}};
       int nested_levels = 0;
+      double lowest = 1e300, highest = 0;  // the actual h2/h1, after rounding n2
       for (int level = 0; level < o.levels; ++level) {
         const int n1 = o.n0 << level;
         const auto r = chapter01::run_transfer_case({n1, chapter01::side2_elements(n1, ratio), o.jitter}, w);
         const bool nested = chapter01::nested(r.trace2, r.trace1);
         nested_levels += nested;
+        const double actual = r.trace2.max_element_length() / r.trace1.max_element_length();
+        lowest = std::min(lowest, actual);
+        highest = std::max(highest, actual);
         csv << trace << "," << label << "," << level << "," << n1 << "," << r.trace2.num_elements()
             << "," << r.trace1.max_element_length() << "," << r.trace2.max_element_length() << ","
             << nested << ","
@@ -113,6 +117,11 @@ Sweep sweep_ratios(const Options& o) {
         curve.h1.push_back(r.trace1.max_element_length());
         curve.pointwise.push_back(r.pointwise_errors.integral_rel_error);
         curve.mortar.push_back(r.mortar_errors.integral_rel_error);
+      }
+      if (highest > 1.05 * ratio || lowest < ratio / 1.05) {
+        char actual[64];
+        std::snprintf(actual, sizeof actual, " (actual %.3g to %.3g)", lowest, highest);
+        curve.label += actual;
       }
       if (nested_levels > 0)
         curve.label += " (xi^2 in xi^1 at " + std::to_string(nested_levels) + " of " +
