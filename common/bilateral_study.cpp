@@ -72,17 +72,21 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   prepare_output_folder(parser, o.out);
 }
 
-TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level) {
+TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect) {
   TwoBodyGeometry g;
   g.L = o.L;
   g.H1 = o.H1;
   g.H2 = o.H2;
   g.jitter = o.jitter;
-  g.n1 = o.n0 << level;
+  g.n1 = n1;
   g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
-  g.m1 = std::max(1, static_cast<int>(std::lround(o.aspect * g.n1 * o.H1 / o.L)));
-  g.m2 = std::max(1, static_cast<int>(std::lround(o.aspect * g.n2 * o.H2 / o.L)));
+  g.m1 = std::max(1, static_cast<int>(std::lround(aspect * g.n1 * o.H1 / o.L)));
+  g.m2 = std::max(1, static_cast<int>(std::lround(aspect * g.n2 * o.H2 / o.L)));
   return g;
+}
+
+TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level) {
+  return two_body_geometry(o, o.n0 << level, o.aspect);
 }
 
 BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching) {

@@ -38,8 +38,10 @@ struct BilateralStudyOptions : TwoBodyOptions {
 // Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
 void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv);
 
-// Meshes of one level: n1 = n0 2^level, n2 = max(2, round(n1 / h_ratio)), m_l rows with
-// cells of width / height = aspect.
+// Meshes with n1 body-1 elements along Gamma_c: n2 = max(2, round(n1 / h_ratio)), m_l rows
+// with cells of width / height = aspect. Chapters 3-5 all build their levels this way.
+TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect);
+// The meshes of one level of chapters 3 and 4: n1 = n0 2^level.
 TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level);
 BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching);
 

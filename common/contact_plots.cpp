@@ -41,16 +41,11 @@ void plot_contact_errors(const std::string& folder, const ConvergenceTable& tabl
 
 void plot_contact_error_vs_time(const std::string& folder, const ConvergenceTable& table,
                                 const std::string& title, bool run) {
-  Figure fig;
-  fig.title = title;
-  fig.xlabel = "wall time [s]";
-  fig.ylabel = "relative error, broken energy norm [-]";
-  fig.log_x = fig.log_y = true;
-  fig.key = "top right";
-  const auto e = table.column("err_energy");
-  fig.series.push_back({"this program (assemble, constrain, solve)", table.column("time_s"), e, "linespoints", "pt 7 lw 2"});
-  fig.series.push_back({"physical limit (assemble K, Cholesky, one solve)", table.column("limit_s"), e, "linespoints", "pt 4 dt 3"});
-  write_figure(folder, "error_vs_time", fig, run);
+  const TimedErrors data{table.column("err_energy"), table.column("time_s"), table.column("limit_s"),
+                         "this program (assemble, constrain, solve)",
+                         "physical limit (assemble K, Cholesky, one solve)"};
+  write_figure(folder, "error_vs_time",
+               error_against_time(title, "wall time [s]", "relative error, broken energy norm [-]", data), run);
 }
 
 void plot_pressure(const std::string& folder, const BilateralLevel& level,

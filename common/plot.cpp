@@ -124,6 +124,19 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
     throw std::runtime_error("gnuplot (" MORTAR_GNUPLOT ") failed on " + script.string());
 }
 
+Figure error_against_time(const std::string& title, const std::string& time_label,
+                          const std::string& error_label, const TimedErrors& d) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = time_label;
+  fig.ylabel = error_label;
+  fig.log_x = fig.log_y = true;
+  fig.key = "top right";
+  fig.series.push_back({d.program_label, d.time_s, d.error, "linespoints", "pt 7 lw 2"});
+  fig.series.push_back({d.limit_label, d.limit_s, d.error, "linespoints", "pt 4 lw 1 dt 3"});
+  return fig;
+}
+
 Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra) {
   Series s;
   s.title = title;

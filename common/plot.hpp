@@ -41,6 +41,15 @@ struct Figure {
 void write_figure(const std::string& folder, const std::string& name, const Figure& figure,
                   bool run_gnuplot);
 
+// Error against wall time for a program and for the physical limit of the same levels (the
+// floor every chapter compares itself with).
+struct TimedErrors {
+  std::vector<double> error, time_s, limit_s;
+  std::string program_label, limit_label;
+};
+Figure error_against_time(const std::string& title, const std::string& time_label,
+                          const std::string& error_label, const TimedErrors& data);
+
 // The edges of a mesh as one Series (each triangle's outline; shared edges drawn twice).
 Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra = "");
 

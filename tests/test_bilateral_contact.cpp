@@ -51,7 +51,9 @@ TEST(BilateralContact, mesh_ratios_from_1_10_to_10_converge) {
       const TwoLevels t = two_levels(small(ratio), m, 1);
       EXPECT_TRUE(std::isfinite(t.fine)) << "ratio " << ratio;
       EXPECT_LT(t.fine, t.coarse) << "ratio " << ratio << ", " << matching_name(m);
-      if (m == Matching::integral) EXPECT_GT(t.rate, 0.75) << "ratio " << ratio;
+      if (m == Matching::integral) {
+        EXPECT_GT(t.rate, 0.75) << "ratio " << ratio;
+      }
     }
 }
 
@@ -65,7 +67,9 @@ TEST(BilateralContact, stiffness_ratios_from_1e_minus6_to_1e6_converge) {
         const TwoLevels t = two_levels(o, m, 1);
         EXPECT_TRUE(std::isfinite(t.fine)) << "E1/E2 = " << 1 / E2 << ", " << solver;
         EXPECT_LT(t.fine, t.coarse) << "E1/E2 = " << 1 / E2 << ", " << matching_name(m) << ", " << solver;
-        if (m == Matching::integral) EXPECT_GT(t.rate, 0.75) << "E1/E2 = " << 1 / E2;
+        if (m == Matching::integral) {
+          EXPECT_GT(t.rate, 0.75) << "E1/E2 = " << 1 / E2;
+        }
       }
     }
 }

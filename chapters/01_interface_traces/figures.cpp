@@ -83,16 +83,13 @@ void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& 
 
 void plot_error_vs_time(const std::string& folder, const mortar::ConvergenceTable& table,
                         const std::string& case_label, bool run) {
-  Figure fig;
-  fig.title = "mortar projection: L^2 error against wall time, " + case_label;
-  fig.xlabel = "wall time, best of 5 [s]";
-  fig.ylabel = "relative L^2 error on side 1 [-]";
-  fig.log_x = fig.log_y = true;
-  fig.key = "top right";
-  const auto e = table.column("err_mortar_l2");
-  fig.series.push_back({"mortar projection (merge, D and M, solve)", table.column("time_s"), e, "linespoints", "pt 7 lw 2"});
-  fig.series.push_back({"limit: mass matrix of side 1, Cholesky, solve", table.column("limit_s"), e, "linespoints", "pt 4 dt 3"});
-  mortar::write_figure(folder, "error_vs_time", fig, run);
+  const mortar::TimedErrors data{table.column("err_mortar_l2"), table.column("time_s"), table.column("limit_s"),
+                                 "mortar projection (merge, D and M, solve)",
+                                 "limit: mass matrix of side 1, Cholesky, solve"};
+  mortar::write_figure(folder, "error_vs_time",
+                       mortar::error_against_time("mortar projection: L^2 error against wall time, " + case_label,
+                                                  "wall time, best of 5 [s]", "relative L^2 error on side 1 [-]", data),
+                       run);
 }
 
 void plot_integral_errors(const std::string& folder, const std::vector<IntegralCurve>& curves,

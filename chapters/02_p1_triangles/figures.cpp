@@ -25,18 +25,13 @@ void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& 
 }
 
 void plot_error_vs_time(const std::string& folder, const mortar::ConvergenceTable& table, bool run) {
-  Figure fig;
-  fig.title = "P1 plane strain: error against wall time";
-  fig.xlabel = "wall time [s]";
-  fig.ylabel = "relative error in the energy norm [-]";
-  fig.log_x = fig.log_y = true;
-  fig.key = "top right";
-  const auto e = table.column("err_energy");
-  fig.series.push_back({"this program (assemble, load, eliminate, factorize, solve)",
-                        table.column("time_s"), e, "linespoints", "pt 7 lw 2"});
-  fig.series.push_back({"physical limit (assemble K, Cholesky, one solve)",
-                        table.column("limit_s"), e, "linespoints", "pt 4 lw 1 dt 3"});
-  mortar::write_figure(folder, "error_vs_time", fig, run);
+  const mortar::TimedErrors data{table.column("err_energy"), table.column("time_s"), table.column("limit_s"),
+                                 "this program (assemble, load, eliminate, factorize, solve)",
+                                 "physical limit (assemble K, Cholesky, one solve)"};
+  mortar::write_figure(folder, "error_vs_time",
+                       mortar::error_against_time("P1 plane strain: error against wall time", "wall time [s]",
+                                                  "relative error in the energy norm [-]", data),
+                       run);
 }
 
 void plot_deformed_mesh(const std::string& folder, const mortar::Mesh& mesh,

@@ -73,15 +73,7 @@ mortar::ContactSolverOptions solver_options(const Options& o, const std::string&
 UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matching,
                             const mortar::ContactSolverOptions& solver) {
   UnilateralSetup s;
-  mortar::TwoBodyGeometry& g = s.geometry;
-  g.L = o.L;
-  g.H1 = o.H1;
-  g.H2 = o.H2;
-  g.jitter = o.jitter;
-  g.n1 = o.n0 << level;
-  g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
-  g.m1 = std::max(1, static_cast<int>(std::lround(g.n1 * o.H1 / o.L)));
-  g.m2 = std::max(1, static_cast<int>(std::lround(g.n2 * o.H2 / o.L)));
+  s.geometry = mortar::two_body_geometry(o, o.n0 << level, 1.0);  // square cells
   s.matching = matching;
   s.nonmortar = o.nonmortar - 1;
   s.solver = solver;
