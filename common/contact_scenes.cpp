@@ -40,6 +40,21 @@ SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact&
   return scene;
 }
 
+SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ManufacturedContact& exact) {
+  SceneData scene;
+  scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());
+  for (int l = 0; l < 2; ++l) {
+    const Mesh& mesh = bodies.body(l).mesh;
+    const Eigen::VectorXd F = body_force_vector(
+        mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4);
+    DirichletData d;
+    prescribe_on_sides(d, mesh, {l == 0 ? Side::top : Side::bottom, Side::left, Side::right},
+                       [&](const Eigen::Vector2d& p) { return exact.u(l, p); });
+    add_body(scene, bodies, l, F, d);
+  }
+  return scene;
+}
+
 SceneData patch_test_scene(const TwoBodies& bodies, double pressure) {
   SceneData scene;
   scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());

@@ -19,6 +19,11 @@ struct SceneData {
 // bottom of body 2, exact tractions sigma n on the four lateral sides. K is then definite.
 SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact& exact);
 
+// The same solution with u prescribed on every outer side (top, left and right of body 1;
+// bottom, left and right of body 2): no side is free, so no corner mixes a support with a
+// free edge, and the exact solution is the only solution (chapter 5's signorini scene).
+SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ManufacturedContact& exact);
+
 // The patch test: a uniform pressure p on the top of body 1, rollers under body 2 (u_y = 0)
 // and on the left sides of both (u_x = 0), the right sides free. The exact stress is
 // sigma = diag(0, -p) in both bodies and u is linear: P1 contains it. Body 1 alone is free to

@@ -3,6 +3,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -85,6 +86,36 @@ void ConvergenceTable::write_csv(const std::string& path) const {
     }
     f << "\n";
   }
+}
+
+ConvergenceTable ConvergenceTable::local_rates() const {
+  ConvergenceTable out;
+  const std::vector<double> h = column("h");
+  for (std::size_t k = 1; k < rows_.size(); ++k) {
+    std::vector<double> values{h[k]};
+    for (std::size_t c = 0; c < columns_.size(); ++c)
+      if (columns_[c].rfind("err_", 0) == 0)
+        values.push_back(log_log_slope({h[k - 1], h[k]}, {rows_[k - 1][c], rows_[k][c]}));
+    out.rows_.push_back(values);
+  }
+  out.columns_.push_back("h");
+  for (const auto& name : columns_)
+    if (name.rfind("err_", 0) == 0) out.columns_.push_back(name);
+  return out;
+}
+
+void ConvergenceTable::print_local_rates() const {
+  const ConvergenceTable local = local_rates();
+  std::printf("local rates, level k-1 to k:\n  %5s %10s", "k", "h");
+  for (std::size_t c = 1; c < local.columns_.size(); ++c) std::printf(" %*s", std::max<int>(8, local.columns_[c].size() - 4), local.columns_[c].substr(4).c_str());
+  std::printf("\n");
+  for (std::size_t k = 0; k < local.rows_.size(); ++k) {
+    std::printf("  %5zu %10.4g", k + 1, local.rows_[k][0]);
+    for (std::size_t c = 1; c < local.columns_.size(); ++c)
+      std::printf(" %*.3f", std::max<int>(8, local.columns_[c].size() - 4), local.rows_[k][c]);
+    std::printf("\n");
+  }
+  std::fflush(stdout);
 }
 
 JsonObject options_json(const OptionParser& options) {

@@ -33,6 +33,13 @@ class ConvergenceTable {
 
   void write_csv(const std::string& path) const;
 
+  // Local rates: for each level k >= 1 and every err_ column, the slope between levels k - 1
+  // and k, log(e_k / e_{k-1}) / log(h_k / h_{k-1}). They show whether a rate has settled,
+  // which a fit over three levels hides. Written as local_rates.csv (columns h, then the err_
+  // columns), and printed as a table.
+  ConvergenceTable local_rates() const;
+  void print_local_rates() const;
+
  private:
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;

@@ -15,6 +15,9 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
                     const std::vector<const UnilateralLevel*>& levels, bool run);
 void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run);
 void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run);
+// Signorini scene: the energy error of both matchings against h with slopes 1/4 and 1.
+void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable& table,
+                      const std::string& matching, const std::vector<SolverRun>& runs, bool run);
 void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,
                             const std::string& error_name, bool run);
 

@@ -4,6 +4,12 @@
 
 namespace chapter05 {
 
+mortar::ManufacturedContact make_exact(const SceneParameters& s, const mortar::Material& body1,
+                                       const mortar::Material& body2) {
+  if (s.name == "signorini")
+    return {body1, body2, mortar::signorini_profile(s.L, mortar::signorini_contact_point(s.L))};
+  return {body1, body2, s.L};
+}
 
 UnilateralScene make_scene(const SceneParameters& s, const mortar::TwoBodies& bodies,
                            const mortar::ManufacturedContact& exact) {
@@ -19,8 +25,12 @@ UnilateralScene make_scene(const SceneParameters& s, const mortar::TwoBodies& bo
   } else if (s.name == "bilateral") {
     u.data = mortar::manufactured_scene(bodies, exact);
     u.gap = [](double) { return 0.0; };
+  } else if (s.name == "signorini") {
+    u.data = mortar::manufactured_scene_all_sides(bodies, exact);
+    const double L = s.L;
+    u.gap = [L](double x) { return mortar::signorini_gap(L, x); };
   } else {
-    throw std::invalid_argument("unknown scene '" + s.name + "' (hertz, partial or bilateral)");
+    throw std::invalid_argument("unknown scene '" + s.name + "' (hertz, partial, bilateral or signorini)");
   }
   return u;
 }

@@ -5,7 +5,10 @@
 //  - partial: the same supports, g = 2 delta x / L: the gap opens towards x = L, so the
 //    bodies touch on the left part only and separate on the right;
 //  - bilateral: chapter 4's exact solution, g = 0; the exact pressure is positive everywhere,
-//    so the unilateral answer must be the bilateral one.
+//    so the unilateral answer must be the bilateral one;
+//  - signorini: an exact unilateral solution (common/manufactured_contact.hpp): contact on
+//    (0, x*), separation on (x*, L), x* = L (1/2 + sqrt(2)/10) never a node; u prescribed on
+//    every outer side, g = A (x - x*)_+^2 / L. Theorem 5.1 is measured on it.
 #pragma once
 
 #include <functional>
@@ -25,6 +28,11 @@ struct UnilateralScene {
   mortar::SceneData data;
   std::function<double(double)> gap;
 };
+
+// The exact solution a scene is measured against: the signorini profile for "signorini",
+// chapter 4's sloped profile otherwise (used by the bilateral scene only).
+mortar::ManufacturedContact make_exact(const SceneParameters& s, const mortar::Material& body1,
+                                       const mortar::Material& body2);
 
 UnilateralScene make_scene(const SceneParameters& s, const mortar::TwoBodies& bodies,
                            const mortar::ManufacturedContact& exact);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
+
+#include "common/quadrature.hpp"
 
 namespace chapter05 {
 
@@ -24,28 +27,52 @@ std::function<double(double)> as_function(const mortar::InterfaceCurve& c) {
 }
 
 double relative(double error, double norm) { return norm > 0 ? error / norm : 0.0; }
+
+// int_{Gamma_c} p, by 8-point Gauss on 64 pieces (p has a C^2 point at x* in the signorini scene)
+double exact_total_force(const mortar::ManufacturedContact& exact, double L) {
+  const mortar::SegmentRule g = mortar::gauss_legendre(8);
+  const int pieces = 64;
+  double total = 0;
+  for (int e = 0; e < pieces; ++e)
+    for (std::size_t q = 0; q < g.points.size(); ++q)
+      total += g.weights[q] * L / pieces * exact.pressure(L * (e + g.points[q]) / pieces);
+  return total;
+}
 }  // namespace
+
+double contact_point_error(const UnilateralLevel& r, double L) {
+  // the discrete contact zone ends halfway between its last active node and the next one
+  if (r.zone.empty) return std::numeric_limits<double>::quiet_NaN();
+  return std::fabs(0.5 * (r.zone.right_active + r.zone.right_inactive) - mortar::signorini_contact_point(L));
+}
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
   using mortar::Range;
-  parser.add_choice("scene", o.scene, {"hertz", "partial", "bilateral"}, "contact scene");
+  parser.add_choice("scene", o.scene, {"hertz", "partial", "bilateral", "signorini"}, "contact scene");
   parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
   parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
   parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with momentum or the paper's plain one");
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = 1 / ||B K^-1 B^T|| by power iteration", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
-  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 14));
-  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 10));
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level; 0 = the scene's (12, signorini 8)",
+                 Range::closed(0, 1 << 14));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3); 0 = the scene's "
+                 "(5, signorini 6)", Range::closed(0, 10));
   mortar::add_two_body_options(parser, o);
   parser.add_double("R", o.R, "radius of the Hertz gap (x - L/2)^2 / (2R) [m]", Range::closed(1e-6, 1e12));
   parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", Range::closed(-1e6, 1e6));
-  bool no_compare = false;
-  parser.add_flag("no-compare", no_compare, "skip the comparison of every solver on both matchings");
+  parser.add_flag("no-compare", o.no_compare, "skip the comparison of every solver on both matchings");
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
-  o.compare = !no_compare;
+  o.compare = !o.no_compare;
+  // the signorini scene measures local rates, which need more levels, each one cheaper
+  const bool signorini = o.scene == "signorini";
+  if (o.n0 == 0) o.n0 = signorini ? 8 : 12;
+  if (o.levels == 0) o.levels = signorini ? 6 : 5;
+  if (o.n0 < 2) parser.fail("n0", "must be 0 (the scene's default) or at least 2, got " + std::to_string(o.n0));
+  if (o.levels < 3) parser.fail("levels", "must be 0 (the scene's default) or at least 3, got " + std::to_string(o.levels));
   if (o.quick) {
     o.n0 = 8;
     o.levels = 3;
@@ -84,7 +111,7 @@ UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matchi
 Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact) {
   Reference ref;
   if (o.scene == "hertz") ref.kind = "hertz";
-  if (o.scene == "bilateral") ref.kind = "exact";
+  if (o.scene == "bilateral" || o.scene == "signorini") ref.kind = "exact";
   if (o.scene == "partial") {
     ref.kind = "finer mesh";
     // two levels beyond the finest, integral matching, active set: the best we can afford
@@ -131,6 +158,9 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     row.push_back({"err_l2", norms.relative_l2()});
     row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});
     row.push_back({"err_jump", relative(mortar::l2_error(r.jump, [](double) { return 0.0; }), mortar::l2_norm(r.jump, c))});
+    const double force = exact_total_force(exact, o.L);
+    row.push_back({"err_total_force", relative(std::fabs(r.total_force - force), force)});
+    if (o.scene == "signorini") row.push_back({"err_contact_point", contact_point_error(r, o.L)});
   } else {
     const auto p = as_function(ref.finer->pressure);
     row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});

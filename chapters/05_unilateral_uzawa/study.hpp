@@ -25,9 +25,9 @@ struct Options : mortar::TwoBodyOptions {
   std::string solver = "pdas";
   std::string acceleration = "nesterov";
   double rho = 0, tol = 1e-8;
-  int n0 = 12, levels = 5;
+  int n0 = 0, levels = 0;  // 0: the scene's default, set by parse_options
   double R = 1, delta = 0.02;
-  bool compare = true;
+  bool no_compare = false, compare = true;
   std::string out = "results/ch05_unilateral_uzawa";
   bool quick = false, no_plot = false;
 };
@@ -50,6 +50,9 @@ Reference make_reference(const Options& o, const mortar::ManufacturedContact& ex
 mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
                       const mortar::ManufacturedContact& exact);
 Hertz hertz_for(const Options& o, const UnilateralLevel& r);
+// Signorini scene: |x*_h - x*|, x*_h the right edge of the discrete contact zone (the midpoint
+// between its last active node and the next node); NaN when nothing touches.
+double contact_point_error(const UnilateralLevel& r, double L);
 
 // One line of solvers.csv: a (matching, solver) pair on one level.
 struct SolverRun {
