@@ -1,5 +1,6 @@
 #include "common/options.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -178,7 +179,12 @@ void OptionParser::parse(int argc, const char* const* argv) {
     }
     const std::string error = o->set(value);
     if (!error.empty()) fail(name, error);
+    given_.push_back(name);
   }
+}
+
+bool OptionParser::given(const std::string& name) const {
+  return std::find(given_.begin(), given_.end(), name) != given_.end();
 }
 
 std::vector<std::pair<std::string, std::string>> OptionParser::values() const {

@@ -45,6 +45,10 @@ class OptionParser {
   // Parses argv; on --help prints usage and exits 0, on any error calls fail() (exit 2).
   void parse(int argc, const char* const* argv);
 
+  // Whether the command line set this option (so a program can choose defaults that
+  // depend on other options, such as the scene).
+  bool given(const std::string& name) const;
+
   // Prints "<program>: --name: message" on stderr and exits with status 2.
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;
 
@@ -70,6 +74,7 @@ class OptionParser {
   std::string summary_;
   bool help_ = false;
   std::vector<Option> options_;
+  std::vector<std::string> given_;
 };
 
 // Parses a finite double, also "p/q"; returns false for anything else (NaN, inf, junk).

@@ -24,6 +24,26 @@ TEST(ConvergenceStudy, rates_use_the_three_finest_levels) {
   EXPECT_EQ(t.rates().count("dofs"), 0u);
 }
 
+TEST(ConvergenceStudy, local_rates_are_level_to_level_slopes) {
+  ConvergenceTable t;
+  // error 3 h^2 on the first three levels, then 5 h: the local rates show the change
+  const double hs[] = {0.4, 0.2, 0.1, 0.05, 0.025};
+  for (int k = 0; k < 5; ++k) {
+    const double h = hs[k];
+    const double e = k <= 2 ? 3 * h * h : 0.3 * h;  // both 0.03 at h = 0.1
+    t.add({{"h", h}, {"dofs", 1.0 / (h * h)}, {"err_a", e}});
+  }
+  const ConvergenceTable local = t.local_rates();
+  ASSERT_EQ(local.size(), 4u);
+  EXPECT_EQ(local.columns(), (std::vector<std::string>{"h", "err_a"}));
+  const std::vector<double> r = local.column("err_a");
+  EXPECT_NEAR(r[0], 2.0, 1e-12);
+  EXPECT_NEAR(r[1], 2.0, 1e-12);
+  EXPECT_NEAR(r[2], 1.0, 1e-12);
+  EXPECT_NEAR(r[3], 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(local.column("h")[3], 0.025);
+}
+
 TEST(ConvergenceStudy, rows_must_repeat_the_columns) {
   ConvergenceTable t;
   t.add({{"h", 1.0}, {"err_a", 1.0}});

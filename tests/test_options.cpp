@@ -35,6 +35,20 @@ TEST(Options, parses_values_fractions_and_flags) {
   EXPECT_TRUE(d.flag);
 }
 
+TEST(Options, given_tells_set_options_from_defaults) {
+  Demo d;
+  OptionParser p("demo", "a demo");
+  p.add_int("n", d.n, "count", Range::positive());
+  p.add_double("nu", d.nu, "ratio", Range::open(-1, 0.5));
+  p.add_flag("flag", d.flag, "flag");
+  const char* args[] = {"demo", "--n", "3", "--flag"};
+  p.parse(4, args);
+  EXPECT_TRUE(p.given("n")) << "set to its default value, but set";
+  EXPECT_TRUE(p.given("flag"));
+  EXPECT_FALSE(p.given("nu"));
+  EXPECT_FALSE(p.given("unknown"));
+}
+
 TEST(Options, parse_number_rejects_junk_nan_and_inf) {
   double v = 0;
   EXPECT_TRUE(parse_number("1e-3", v));

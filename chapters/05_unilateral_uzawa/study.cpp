@@ -54,10 +54,10 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with momentum or the paper's plain one");
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = 1 / ||B K^-1 B^T|| by power iteration", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
-  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level; 0 = the scene's (12, signorini 8)",
-                 Range::closed(0, 1 << 14));
-  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3); 0 = the scene's "
-                 "(5, signorini 6)", Range::closed(0, 10));
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8 unless given)",
+                 Range::closed(2, 1 << 14));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3; signorini: 6 unless given)",
+                 Range::closed(3, 10));
   mortar::add_two_body_options(parser, o);
   parser.add_double("R", o.R, "radius of the Hertz gap (x - L/2)^2 / (2R) [m]", Range::closed(1e-6, 1e12));
   parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", Range::closed(-1e6, 1e6));
@@ -68,11 +68,10 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.parse(argc, argv);
   o.compare = !o.no_compare;
   // the signorini scene measures local rates, which need more levels, each one cheaper
-  const bool signorini = o.scene == "signorini";
-  if (o.n0 == 0) o.n0 = signorini ? 8 : 12;
-  if (o.levels == 0) o.levels = signorini ? 6 : 5;
-  if (o.n0 < 2) parser.fail("n0", "must be 0 (the scene's default) or at least 2, got " + std::to_string(o.n0));
-  if (o.levels < 3) parser.fail("levels", "must be 0 (the scene's default) or at least 3, got " + std::to_string(o.levels));
+  if (o.scene == "signorini") {
+    if (!parser.given("n0")) o.n0 = 8;
+    if (!parser.given("levels")) o.levels = 6;
+  }
   if (o.quick) {
     o.n0 = 8;
     o.levels = 3;

@@ -25,7 +25,7 @@ struct Options : mortar::TwoBodyOptions {
   std::string solver = "pdas";
   std::string acceleration = "nesterov";
   double rho = 0, tol = 1e-8;
-  int n0 = 0, levels = 0;  // 0: the scene's default, set by parse_options
+  int n0 = 12, levels = 5;  // signorini: 8 and 6 unless given (parse_options)
   double R = 1, delta = 0.02;
   bool no_compare = false, compare = true;
   std::string out = "results/ch05_unilateral_uzawa";
