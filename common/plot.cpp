@@ -106,7 +106,7 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
     std::ostringstream label;
     label << (r.label.empty() ? "slope " : r.label);
     if (r.label.empty()) label << r.slope;
-    gp << ", \\\n     ref" << k << "(x) with lines dt 2 lw 2 lc rgb '#555555' title '"
+    gp << ", \\\n     ref" << k << "(x) with lines " << (r.style.empty() ? "dt 2 lw 2 lc rgb '#555555'" : r.style) << " title '"
        << escape(label.str()) << "'";
   }
   gp << "\n";

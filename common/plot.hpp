@@ -24,6 +24,7 @@ struct ReferenceSlope {
   int anchor = 0;
   double offset = 0.5;
   std::string label;  // default "slope p"
+  std::string style;  // gnuplot line style; default dashed grey "dt 2 lw 2 lc rgb '#555555'"
 };
 
 struct Figure {

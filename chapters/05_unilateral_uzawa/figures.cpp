@@ -129,7 +129,8 @@ void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable&
   fig.key = "bottom right";
   // both matchings from the solver comparison when it ran (active set), else this run's
   for (const std::string m : {"integral", "pointwise"}) {
-    Series s{m + " matching", {}, {}, "linespoints", m == "integral" ? "pt 7 lw 2 lc rgb '#1f77b4'" : "pt 6 lw 2 lc rgb '#d62728'"};
+    Series s{m + " matching", {}, {}, "linespoints",
+             m == "integral" ? "pt 7 ps 1.6 lw 3 lc rgb '#1f77b4'" : "pt 6 ps 1.2 lw 2 dt 3 lc rgb '#d62728'"};
     for (const SolverRun& r : runs)
       if (r.matching == m && r.solver == "pdas") {
         s.x.push_back(r.h);
@@ -143,8 +144,9 @@ void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable&
   }
   // Theorem 5.1 bounds the energy error by C (h1^{1/4} + h2); the optimal O(h) is proved
   // later (Hueber-Wohlmuth 2005; Drouet-Hild 2015). Both drawn through the finest point.
-  fig.slopes.push_back({1.0, 0, 0.3, "slope 1 (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)"});
-  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1)"});
+  fig.slopes.push_back({1.0, 0, 0.3, "slope 1 (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)",
+                        "dt 2 lw 2 lc rgb '#2ca02c'"});
+  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1: C (h1^{1/4} + h2))", "dt 4 lw 2 lc rgb '#9467bd'"});
   mortar::write_figure(folder, "theorem_5_1", fig, run);
 }
 
