@@ -52,6 +52,8 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   add_two_body_options(parser, o);
   parser.add_double("aspect", o.aspect, "cell width / cell height (20 for 1:20 cells)", Range::closed(0.05, 20));
   parser.add_choice("saddle-solver", o.saddle_solver, {"elimination", "lu"}, "saddle-point solver");
+  parser.add_choice("pressure-ends", o.pressure_ends, {"sloped", "flat"},
+                    "manufactured pressure: sloped (sigma_N' != 0 at x = L) or flat (sigma_N' = 0 at both ends)");
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
@@ -70,6 +72,11 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
     parser.fail("levels", message);
   }
   prepare_output_folder(parser, o.out);
+}
+
+ManufacturedContact manufactured_solution(const BilateralStudyOptions& o) {
+  const Material m1(o.E1, o.nu1), m2(o.E2, o.nu2);
+  return ManufacturedContact(m1, m2, o.pressure_ends == "flat" ? flat_ends_profile(o.L) : sloped_profile(o.L));
 }
 
 TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect) {
@@ -97,7 +104,11 @@ BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matchin
   return b;
 }
 
+// Pressure errors relative to the norm of the exact p: the L2 ones (whole, interior, ends,
+// best approximation) to ||p||_{L2}, so that the squares of interior and ends still add up to
+// the whole; the mesh-dependent ones to |Gamma_c|^{1/2} ||p||_{L2} (PressureErrors::norm_hminus).
 Row BilateralLevel::row() const {
+  const PressureErrors& p = pressure_errors;
   return {{"h", std::max(h1, h2)},
           {"h1", h1},
           {"h2", h2},
@@ -107,7 +118,13 @@ Row BilateralLevel::row() const {
           {"limit_s", limit_s},
           {"err_energy", err_energy},
           {"err_l2", err_l2},
-          {"err_pressure", err_pressure},
+          {"err_pressure", p.l2 / p.norm_l2},
+          {"err_pressure_interior", p.l2_interior / p.norm_l2},
+          {"err_pressure_ends", p.l2_ends / p.norm_l2},
+          {"err_pressure_hminus", p.hminus / p.norm_hminus},
+          {"err_pressure_best", p.best_l2 / p.norm_l2},
+          {"err_pressure_best_interior", p.best_l2_interior / p.norm_l2},
+          {"err_pressure_best_hminus", p.best_hminus / p.norm_hminus},
           {"err_jump", err_jump}};
 }
 
@@ -131,7 +148,7 @@ BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const 
   r.jump = normal_jump(r.bodies, r.solution.gamma, r.solution.u);
   const auto p = [&](double x) { return exact.pressure(x); };
   const auto c = [&](double x) { return exact.normal_displacement(x); };
-  r.err_pressure = l2_error(r.pressure, p) / l2_norm(r.pressure, p);
+  r.pressure_errors = pressure_errors(r.solution.gamma, r.pressure, p);
   // the exact jump is zero: measure [u_h.n] against the size of u.n itself
   r.err_jump = l2_error(r.jump, [](double) { return 0.0; }) / l2_norm(r.jump, c);
   r.h1 = r.solution.gamma.nonmortar == 0 ? r.solution.gamma.nonmortar_trace.max_element_length()
@@ -209,7 +226,9 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
       .set("limit_ratio", f.time_s / f.limit_s)
       .set("err_energy", f.err_energy)
       .set("err_l2", f.err_l2)
-      .set("err_pressure", f.err_pressure)
+      .set("err_pressure", f.pressure_errors.l2 / f.pressure_errors.norm_l2)
+      .set("err_pressure_hminus", f.pressure_errors.hminus / f.pressure_errors.norm_hminus)
+      .set("err_pressure_best", f.pressure_errors.best_l2 / f.pressure_errors.norm_l2)
       .set("err_jump", f.err_jump)
       .set("patch_test_rel_error", (integral ? study.patch_integral : study.patch_pointwise).rel_error)
       .set(integral ? "patch_test_rel_error_pointwise" : "patch_test_rel_error_integral",

@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/manufactured_contact.hpp"
 #include "common/options.hpp"
+#include "common/pressure_norms.hpp"
 
 namespace mortar {
 
@@ -30,6 +31,7 @@ struct BilateralStudyOptions : TwoBodyOptions {
   int levels = 6;
   double aspect = 1;  // cell width / cell height
   std::string saddle_solver = "elimination";
+  std::string pressure_ends = "sloped";  // the manufactured sigma_N: sloped (p'(L) != 0) or flat
   std::string out;
   bool quick = false;
   bool no_plot = false;
@@ -37,6 +39,11 @@ struct BilateralStudyOptions : TwoBodyOptions {
 
 // Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
 void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv);
+
+// The manufactured solution --pressure-ends asks for: sloped_profile (sigma_N' != 0 at x = L,
+// which caps the L2 best approximation in M_h^1 at h^{3/2}) or flat_ends_profile
+// (sigma_N' = 0 at both ends, so the interior rate shows).
+ManufacturedContact manufactured_solution(const BilateralStudyOptions& o);
 
 // Meshes with n1 body-1 elements along Gamma_c: n2 = max(2, round(n1 / h_ratio)), m_l rows
 // with cells of width / height = aspect. Chapters 3-5 all build their levels this way.
@@ -51,7 +58,8 @@ struct BilateralLevel {
   InterfaceCurve pressure, jump;
   double h1 = 0, h2 = 0;
   double time_s = 0, limit_s = 0;
-  double err_energy = 0, err_l2 = 0, err_pressure = 0, err_jump = 0;
+  double err_energy = 0, err_l2 = 0, err_jump = 0;
+  PressureErrors pressure_errors{};  // absolute; row() divides by the norms of the exact p
   Row row() const;
 };
 

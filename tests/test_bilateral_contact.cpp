@@ -116,3 +116,41 @@ TEST(BilateralContact, nearly_incompressible_bodies_give_a_finite_answer_that_lo
   EXPECT_TRUE(std::isfinite(t.fine));
   EXPECT_LT(t.fine, t.coarse);
 }
+
+// lambda_h is in M_h^1, so its L2 error can never be below the best approximation of -sigma_N
+// there; the row's relative columns split the same way as the absolute norms.
+TEST(BilateralContact, integral_pressure_is_never_better_than_its_best_approximation) {
+  for (double ratio : {1.0 / 3, 1.5, 3.0})
+    for (int nonmortar : {1, 2}) {
+      BilateralStudyOptions o = small(ratio);
+      o.nonmortar = nonmortar;
+      const BilateralLevel level = solve_manufactured_level(manufactured_solution(o), level_geometry(o, 1),
+                                                            solver_options(o, Matching::integral));
+      const PressureErrors& p = level.pressure_errors;
+      EXPECT_GE(p.l2, p.best_l2) << "ratio " << ratio << ", nm " << nonmortar;
+      EXPECT_NEAR(p.l2 * p.l2, p.l2_interior * p.l2_interior + p.l2_ends * p.l2_ends, 1e-12 * p.l2 * p.l2);
+      double interior = 0, ends = 0, whole = 0;
+      for (const auto& [column, value] : level.row()) {
+        if (column == "err_pressure") whole = value;
+        if (column == "err_pressure_interior") interior = value;
+        if (column == "err_pressure_ends") ends = value;
+      }
+      EXPECT_NEAR(whole, p.l2 / p.norm_l2, 1e-15);
+      EXPECT_NEAR(whole * whole, interior * interior + ends * ends, 1e-12 * whole * whole);
+    }
+}
+
+TEST(BilateralContact, flat_pressure_ends_give_a_pressure_without_slope_at_both_ends) {
+  BilateralStudyOptions o = small(1.5);
+  const auto slope = [&](const ManufacturedContact& exact, double x) {
+    const double d = 1e-6 * o.L;
+    return (exact.pressure(x + d) - exact.pressure(x - d)) / (2 * d);
+  };
+  const ManufacturedContact sloped = manufactured_solution(o);
+  EXPECT_GT(std::fabs(slope(sloped, o.L)), 1e-3);
+  o.pressure_ends = "flat";
+  const ManufacturedContact flat = manufactured_solution(o);
+  EXPECT_LT(std::fabs(slope(flat, 0.0)), 1e-8);
+  EXPECT_LT(std::fabs(slope(flat, o.L)), 1e-8);
+  EXPECT_GT(flat.pressure(0.5 * o.L), 0.0);  // still pressed everywhere: bilateral is the right model
+}

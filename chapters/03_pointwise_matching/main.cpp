@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   mortar::parse_bilateral_options(parser, o, argc, argv);
   try {
     // 2. The exact two-material solution: the bodies slide on each other, stay glued in y.
-    const mortar::ManufacturedContact exact(mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2), o.L);
+    const mortar::ManufacturedContact exact = mortar::manufactured_solution(o);
 
     // 3. Refine both meshes together with h2/h1 fixed, then the patch test (h2/h1 = 3/7).
     const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::pointwise);
