@@ -44,7 +44,8 @@ configure() {
 
 # Further scenes shown in the lecture notes: "program|folder under figures/program|options"
 extra_runs=("ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare"
-            "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare")
+            "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare"
+            "ch05_unilateral_uzawa|signorini|--scene signorini")
 
 run_course() {
   build build
