@@ -19,7 +19,10 @@ std::string describe(const std::string& column) {
   if (column == "err_jump") return "jump [u.n], L^2(Gamma_c)";
   if (column == "err_peak_pressure") return "peak pressure against Hertz";
   if (column == "err_half_width") return "half-width against Hertz";
-  if (column == "err_total_force") return "total force against the reference";
+  if (column == "err_total_force") return "total force";
+  if (column == "err_pressure_hminus") return "pressure, mesh-dependent H^{-1/2}";
+  if (column == "err_pressure_best") return "best approximation of the pressure in M_h^1, L^2";
+  if (column == "err_contact_point") return "contact point |x*_h - x*| [m] (absolute)";
   return column;
 }
 
@@ -103,9 +106,10 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
   Figure fig;
   fig.title = "relative errors against h (chosen matching and solver)";
   fig.xlabel = "h = max(h1, h2) [m]";
-  fig.ylabel = "relative error [-]";
+  fig.ylabel = "relative error [-] (contact point: [m])";
   fig.log_x = fig.log_y = true;
-  fig.key = "bottom right";
+  fig.key = "outside right top";  // beside the data, never over it
+  fig.width = 1250;
   const auto h = table.column("h");
   const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11"};
   int k = 0;
