@@ -236,7 +236,7 @@ ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_n
   // rho above 2 / ||S|| cannot converge: refuse it before iterating. (||S|| is a power-
   // iteration estimate, from below; a rho just under the true limit is caught by the
   // blow-up test in the loop instead.)
-  if (sol.rho * S_norm >= 2.0)
+  if (sol.rho >= 2.0 / S_norm)
     throw std::runtime_error("Uzawa diverges for rho = " + format(sol.rho) +
                              ": rho must stay below 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm) +
                              " (leave --rho at 0 to choose it automatically)");
