@@ -43,7 +43,12 @@ configure() {
 }
 
 # Further scenes shown in the lecture notes: "program|folder under figures/program|options"
-extra_runs=("ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare"
+# Chapter 3 at h2/h1 = 1/3, where Theorem 4.1's h^{1/2} shows (about 45 s, 1.5M dofs at the end).
+# Chapter 1's square-root edge over 12 levels (about 25 s).
+# Chapter 5's exact unilateral solution, Theorem 5.1 measured (about 100 s with the solver comparison).
+extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12"
+            "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7"
+            "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare"
             "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare"
             "ch05_unilateral_uzawa|signorini|--scene signorini")
 

@@ -1,7 +1,9 @@
 #include "common/contact_solvers.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -63,6 +65,17 @@ class DualOperator {
     if (cache_.find(i) == cache_.end()) compute({i});
     return cache_.at(i);
   }
+  // The dense block S_AA from cached columns (computing the missing ones).
+  Eigen::MatrixXd block(const std::vector<int>& rows) {
+    prefetch(rows);
+    const int a = static_cast<int>(rows.size());
+    Eigen::MatrixXd S_AA(a, a);
+    for (int c = 0; c < a; ++c) {
+      const Eigen::VectorXd& col = cache_.at(rows[c]);
+      for (int r = 0; r < a; ++r) S_AA(r, c) = col[rows[r]];
+    }
+    return S_AA;
+  }
   // ||S|| by power iteration on full vectors: each step one solve with K.
   double norm_estimate(int steps = 12) {
     if (size() == 0) return 0.0;
@@ -116,20 +129,120 @@ std::string format(double v) {
   return o.str();
 }
 
+// Extreme Ritz values of a symmetric positive semidefinite A after up to `steps` Lanczos steps
+// (full reorthogonalization, so no ghost copies): the smallest is >= lambda_min(A), the
+// largest <= lambda_max(A). The start vector is not symmetric about the middle of Gamma_c,
+// so antisymmetric eigenvectors of a symmetric scene are not missed.
+struct Extremes {
+  double min = 0, max = 0;
+};
+
+Extremes lanczos_extremes(const Eigen::MatrixXd& A, int steps = 30) {
+  const int n = static_cast<int>(A.rows()), k = std::min(n, steps);
+  Eigen::MatrixXd Q(n, k);
+  std::vector<double> alpha, beta;
+  Eigen::VectorXd q = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0).normalized();
+  for (int j = 0; j < k; ++j) {
+    Q.col(j) = q;
+    Eigen::VectorXd w = A * q;
+    alpha.push_back(q.dot(w));
+    for (int pass = 0; pass < 2; ++pass) w -= Q.leftCols(j + 1) * (Q.leftCols(j + 1).transpose() * w);
+    const double next = w.norm();
+    if (j + 1 == k || next <= 1e-12 * std::fabs(alpha.front())) break;  // A's span is exhausted
+    beta.push_back(next);
+    q = w / next;
+  }
+  const int m = static_cast<int>(alpha.size());
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, m);
+  for (int j = 0; j < m; ++j) T(j, j) = alpha[j];
+  for (int j = 0; j + 1 < m; ++j) T(j, j + 1) = T(j + 1, j) = beta[j];
+  const Eigen::VectorXd theta = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(T, Eigen::EigenvaluesOnly).eigenvalues();
+  return {theta.minCoeff(), theta.maxCoeff()};
+}
+
+std::vector<int> support(const Eigen::VectorXd& lambda) {
+  std::vector<int> rows;
+  for (int i = 0; i < lambda.size(); ++i)
+    if (lambda[i] > 0) rows.push_back(i);
+  return rows;
+}
+
+// The dual energy theta(lambda) = 1/2 lambda.S lambda - b.lambda = 1/2 lambda.(gap - b), with
+// gap = S lambda - b. A projected gradient step with rho < 2 / lambda_max never raises it.
+double dual_energy(const Eigen::VectorXd& lambda, const Eigen::VectorXd& gap, const Eigen::VectorXd& b) {
+  return 0.5 * lambda.dot(gap - b);
+}
+
+// The step of plain Uzawa. Near the solution the nonzero multipliers A no longer change and the
+// iteration is gradient descent on S_AA: its error contracts by max |1 - rho mu| over the
+// eigenvalues mu of S_AA, least for rho = 2 / (mu_max + mu_min), about twice 1 / ||S|| when
+// S_AA is badly conditioned. We keep lambda_max = ||S|| (so rho stays below the global limit
+// 2 / ||S||, whatever A becomes later), with mu_min from Lanczos on S_AA. An overestimate of
+// mu_min (what Lanczos gives) only moves rho towards 1 / ||S||, on the safe side.
+class StepFromBothEnds {
+ public:
+  StepFromBothEnds(double S_norm, bool enabled) : S_norm_(S_norm), enabled_(enabled) {}
+
+  // Called after each step; returns the step for the next one.
+  double next_step(DualOperator& S, const Eigen::VectorXd& lambda, double rho) {
+    if (!enabled_) return rho;
+    std::vector<int> A = support(lambda);
+    stable_ = A == last_ ? stable_ + 1 : 0;
+    last_ = std::move(A);
+    if (stable_ != settle_steps || last_.empty() || last_ == estimated_for_) return rho;
+    estimated_for_ = last_;
+    const Extremes e = lanczos_extremes(S.block(last_));
+    const double top = std::max(S_norm_, e.max);
+    // mu_min >= 1e-3 lambda_max keeps rho lambda_max <= 1.998 for a singular S_AA (dependent
+    // rows), where the top mode would otherwise stop contracting.
+    lambda_min_ = std::max(e.min, 1e-3 * top);
+    return 2.0 / (top + lambda_min_);
+  }
+  // The dual energy rose: the step is too long for the rows now active. Back to 1 / ||S||.
+  double fall_back() {
+    enabled_ = false;
+    fell_back_ = true;
+    return 1.0 / S_norm_;
+  }
+  bool enabled() const { return enabled_; }
+  bool fell_back() const { return fell_back_; }
+  double lambda_min() const { return lambda_min_; }
+
+ private:
+  static constexpr int settle_steps = 20;  // unchanged A for this many steps counts as settled
+  double S_norm_;
+  bool enabled_;
+  bool fell_back_ = false;
+  double lambda_min_ = 0;
+  int stable_ = 0;
+  std::vector<int> last_, estimated_for_;
+};
+
+void check_divergence(const ContactSolution& sol, double best, double S_norm, int k) {
+  // Slow is not divergent: plain Uzawa on a badly conditioned S creeps for 1e5 steps. Only a
+  // residual that is no longer finite or has grown a millionfold means divergence.
+  if (!std::isfinite(sol.residual) || sol.residual > 1e6 * std::max(best, 1.0))
+    throw std::runtime_error(
+        "Uzawa diverges: after " + std::to_string(k) + " iterations the complementarity "
+        "residual has grown to " + format(sol.residual) + ", with rho = " + format(sol.rho) +
+        " against an estimated limit 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm));
+}
+
 ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_norm) {
   ContactSolution sol;
   const int m = S.size();
   const Scales sc = scales_of(S, S_norm);
   sol.rho = o.rho > 0 ? o.rho : 1.0 / S_norm;
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), previous = lambda;
-  double t = 1, best = std::numeric_limits<double>::infinity();
   // rho above 2 / ||S|| cannot converge: refuse it before iterating. (||S|| is a power-
   // iteration estimate, from below; a rho just under the true limit is caught by the
   // blow-up test in the loop instead.)
-  if (sol.rho * S_norm >= 2.0)
+  if (sol.rho >= 2.0 / S_norm)
     throw std::runtime_error("Uzawa diverges for rho = " + format(sol.rho) +
                              ": rho must stay below 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm) +
                              " (leave --rho at 0 to choose it automatically)");
+  StepFromBothEnds step(S_norm, o.rho == 0 && !o.accelerate && o.step_from_both_ends);
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), previous = lambda;
+  double t = 1, best = std::numeric_limits<double>::infinity(), energy = 0;
   for (int k = 1; k <= o.max_iterations; ++k) {
     // Nesterov: step from the extrapolated point y, not from lambda itself
     const double t_next = 0.5 * (1 + std::sqrt(1 + 4 * t * t));
@@ -138,20 +251,24 @@ ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_n
     previous = lambda;
     lambda = (y + sol.rho * (S.b() - S.apply(y))).cwiseMax(0.0);
     const Eigen::VectorXd gap = S.apply(lambda) - S.b();  // G - B u
+    const double next_energy = dual_energy(lambda, gap, S.b());
+    if (step.enabled() && next_energy > energy + 1e-12 * std::fabs(energy)) {
+      lambda = previous;  // undo the step, take it again with the safe rho
+      sol.rho = step.fall_back();
+      continue;
+    }
+    energy = next_energy;
     sol.residual = complementarity_residual(lambda, gap, sc.d, sc.lambda);
     sol.iterations = k;
-    // Slow is not divergent: plain Uzawa on a badly conditioned S creeps for 1e5 steps. Only a
-    // residual that is no longer finite or has grown a millionfold means divergence.
-    if (!std::isfinite(sol.residual) || sol.residual > 1e6 * std::max(best, 1.0))
-      throw std::runtime_error(
-          "Uzawa diverges: after " + std::to_string(k) + " iterations the complementarity "
-          "residual has grown to " + format(sol.residual) + ", with rho = " + format(sol.rho) +
-          " against an estimated limit 2 / ||B K^{-1} B^T|| = " + format(2.0 / S_norm));
+    check_divergence(sol, best, S_norm, k);
     best = std::min(best, sol.residual);
     if (sol.residual <= o.tol) {
       sol.lambda = lambda;
+      sol.lambda_min = step.lambda_min();
+      sol.step_fell_back = step.fell_back();
       return sol;
     }
+    sol.rho = step.next_step(S, lambda, sol.rho);
   }
   throw std::runtime_error("Uzawa did not reach the tolerance " + format(o.tol) + " in " +
                            std::to_string(o.max_iterations) + " iterations (residual " +

@@ -7,9 +7,15 @@
 // the dual operator S = B K^{-1} B^T and the unconstrained response b = B K^{-1} f - G:
 // penetration = b - S lambda. K is factorized once. A column S e_i costs one solve with K and
 // is only needed once lambda_i may be nonzero, so columns are computed on demand and cached.
-//  - Uzawa (the paper's algorithm): lambda <- max(0, lambda + rho (b - S lambda)), convergent
-//    for 0 < rho < 2 / ||S||; rho = 1 / ||S|| with ||S|| from a few power iterations.
-//    With `accelerate`, Nesterov's momentum on the same projected step (FISTA on the dual).
+//  - Uzawa (a classical algorithm for such problems; the paper proves error estimates and gives
+//    no solution algorithm): lambda <- max(0, lambda + rho (b - S lambda)), a projected gradient
+//    step on the dual problem, convergent for 0 < rho < 2 / ||S||. It starts with
+//    rho = 1 / ||S||, ||S|| from a few power iterations. Plain Uzawa then switches, once the
+//    set of nonzero multipliers A has stopped changing, to rho = 2 / (lambda_max + lambda_min)
+//    with lambda_min that of the block S_AA (Lanczos on its cached columns): the step that
+//    makes the slowest and the fastest modes on A contract equally. A rise of the dual energy
+//    sends it back to 1 / ||S|| for good.
+//    With `accelerate`, Nesterov's momentum on the step 1 / ||S|| (FISTA on the dual).
 //  - pdas, the primal-dual active set method (a semi-smooth Newton method): guess the active
 //    set A = {i : lambda_i + c (b - S lambda)_i > 0}, solve S_AA lambda_A = b_A with
 //    lambda = 0 elsewhere, repeat until A stops changing.
@@ -38,7 +44,8 @@ struct ContactSolverOptions {
   ContactSolverKind kind = ContactSolverKind::pdas;
   bool accelerate = true;     // Uzawa only: Nesterov momentum
   double tol = 1e-8;          // on the complementarity residual
-  double rho = 0;             // Uzawa step; 0 = 1 / ||S|| from power iterations
+  double rho = 0;             // Uzawa step; 0 = chosen as above (1 / ||S||, then from both ends)
+  bool step_from_both_ends = true;  // plain Uzawa, rho = 0: switch to 2 / (lambda_max + lambda_min)
   int max_iterations = 1000000;
   SpdBackend backend = fastest_spd_backend();
 };
@@ -48,8 +55,10 @@ struct ContactSolution {
   int iterations = 0;
   int columns = 0;         // columns of S computed (one K solve each)
   double residual = 0;     // complementarity residual at the end
-  double rho = 0;          // the Uzawa step used
+  double rho = 0;          // the Uzawa step used at the end
   double S_norm = 0;       // the estimate of ||B K^{-1} B^T||
+  double lambda_min = 0;   // plain Uzawa: lambda_min(S_AA) estimate behind the last step (0: none)
+  bool step_fell_back = false;  // plain Uzawa: the dual energy rose and rho went back to 1 / ||S||
 };
 
 // The complementarity residual, dimensionless:

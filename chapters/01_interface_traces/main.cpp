@@ -11,6 +11,7 @@
 //   ch01_interface_traces --trace rough --h-ratio 1/3   # 24 kinks
 //   ch01_interface_traces --jitter 0.3 --levels 9
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -19,9 +20,11 @@
 
 #include "common/convergence_study.hpp"
 #include "common/options.hpp"
+#include "common/trace_transfer.hpp"
 #include "figures.hpp"
 #include "trace_functions.hpp"
 #include "transfer_case.hpp"
+#include "transfer_operators.hpp"
 
 namespace {
 
@@ -46,7 +49,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 20));
   parser.add_double("h-ratio", o.h_ratio, "mesh ratio r = h2 / h1 (side 2 gets round(n1 / r) elements)",
                     Range::closed(0.01, 100));
-  parser.add_choice("trace", o.trace, {"smooth", "kink", "rough"}, "trace for the convergence table");
+  parser.add_choice("trace", o.trace, {"smooth", "kink", "rough", "edge"},
+                    "trace for the convergence table (edge: a sqrt(1 - x^2/a^2)_+ pressure shape)");
   parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
   parser.add_string("out", o.out, "output folder");
@@ -132,6 +136,52 @@ Sweep sweep_ratios(const Options& o) {
   return s;
 }
 
+
+// The transfers as matrices on one level (n1 = 4 n0): forces of a uniform traction carried
+// from side 1 to side 2, how far one side-2 hat reaches on side 1, and int w without the end
+// modification of M_h^1.
+struct OperatorFacts {
+  int n1 = 0, n2 = 0;
+  chapter01::ForceTransfer mortar_force, pointwise_force;
+  chapter01::Reach mortar_reach, pointwise_reach;
+  double plain_hats_integral_rel_error = 0;
+};
+
+OperatorFacts operator_facts(const Options& o, const chapter01::TraceFunction& w) {
+  OperatorFacts f;
+  f.n1 = 4 * o.n0;
+  f.n2 = chapter01::side2_elements(f.n1, o.h_ratio);
+  const auto t1 = mortar::uniform_trace(o.L, f.n1, o.jitter, 1), t2 = mortar::uniform_trace(o.L, f.n2, o.jitter, 2);
+  const Eigen::MatrixXd mortar = chapter01::mortar_matrix(t1, t2, mortar::end_modified_p1(t1));
+  const Eigen::MatrixXd pointwise = chapter01::pointwise_matrix(t1, t2);
+  f.mortar_force = chapter01::uniform_traction_transfer(mortar, t1, t2);
+  f.pointwise_force = chapter01::uniform_traction_transfer(pointwise, t1, t2);
+  f.mortar_reach = chapter01::reach_of_middle_hat(mortar);
+  f.pointwise_reach = chapter01::reach_of_middle_hat(pointwise);
+  std::vector<double> w2;
+  for (double x : t2.x) w2.push_back(w.value(x));
+  const Eigen::VectorXd w1 = chapter01::mortar_matrix(t1, t2, chapter01::plain_interior_hats(t1)) *
+                             Eigen::Map<const Eigen::VectorXd>(w2.data(), static_cast<Eigen::Index>(w2.size()));
+  const double int2 = mortar::integral(t2, w2);
+  f.plain_hats_integral_rel_error =
+      std::fabs(mortar::integral(t1, std::vector<double>(w1.data(), w1.data() + w1.size())) - int2) / std::fabs(int2);
+  return f;
+}
+
+void print_operator_facts(const OperatorFacts& f) {
+  std::printf("as matrices w1 = P w2 (n1 = %d, n2 = %d), a uniform traction carried from side 1 to side 2 "
+              "as F2 = P^T F1:\n"
+              "  total force |sum F2 - sum F1| / sum F1: mortar %.1e, pointwise %.1e (equal and opposite for both)\n"
+              "  nodal forces max |F2 - consistent load| / max load: mortar %.1e, pointwise %.2f\n"
+              "  one side-2 hat reaches %d of %d side-1 nodes by the mortar projection (decay %.3f per element), "
+              "%d by pointwise transfer\n"
+              "  plain interior hats as M_h (no end modification): |int w1 - int w2| / |int w2| = %.2e\n",
+              f.n1, f.n2, f.mortar_force.total_rel_error, f.pointwise_force.total_rel_error,
+              f.mortar_force.nodal_rel_error, f.pointwise_force.nodal_rel_error, f.mortar_reach.nodes_reached,
+              f.mortar_reach.nodes, f.mortar_reach.decay_per_element, f.pointwise_reach.nodes_reached,
+              f.plain_hats_integral_rel_error);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -155,7 +205,10 @@ int main(int argc, char** argv) {
     // 3. The sweep over traces and mesh ratios 1/10 .. 10: conservation of int w.
     const Sweep sweep = sweep_ratios(o);
 
-    // 4. convergence.csv and summary.json.
+    // 4. The transfers as matrices: forces, reach, and the end modification.
+    const OperatorFacts facts = operator_facts(o, w);
+
+    // 5. convergence.csv and summary.json.
     const auto rates = table.rates();
     mortar::JsonObject results;
     results.set("h1_m", finest.trace1.max_element_length())
@@ -166,24 +219,35 @@ int main(int argc, char** argv) {
         .set("err_mortar_l2", finest.mortar_errors.l2)
         .set("err_pointwise_l2", finest.pointwise_errors.l2)
         .set("mortar_integral_rel_error", sweep.worst_mortar)
-        .set("pointwise_integral_rel_error", sweep.worst_pointwise);
+        .set("pointwise_integral_rel_error", sweep.worst_pointwise)
+        .set("mortar_uniform_traction_nodal_rel_error", facts.mortar_force.nodal_rel_error)
+        .set("pointwise_uniform_traction_nodal_rel_error", facts.pointwise_force.nodal_rel_error)
+        .set("pointwise_total_force_rel_error", facts.pointwise_force.total_rel_error)
+        .set("mortar_hat_reach_nodes", facts.mortar_reach.nodes_reached)
+        .set("plain_hats_integral_rel_error", facts.plain_hats_integral_rel_error);
     table.write_csv(o.out + "/convergence.csv");
     mortar::write_summary(o.out + "/summary.json", parser, rates, results);
-    const bool smooth = o.trace == "smooth";
+    // Interpolation theory: smooth in H^2 (L2 2, H1 1); kinks in H^{3/2-eps} (3/2, 1/2);
+    // a square-root edge in H^{1-eps} (L2 1, and w' not square integrable: no H1 error).
+    const bool smooth = o.trace == "smooth", edge = o.trace == "edge";
+    const double l2_theory = smooth ? 2.0 : edge ? 1.0 : 1.5;
+    const double h1_theory = smooth ? 1.0 : edge ? std::nan("") : 0.5;
     std::printf("rates (three finest levels): mortar L2 %.3f, H1 %.3f; pointwise L2 %.3f, H1 %.3f\n"
                 "interpolation theory for a %s trace: L2 %s, H1 %s\n",
                 rates.at("err_mortar_l2"), rates.at("err_mortar_h1"), rates.at("err_pointwise_l2"),
-                rates.at("err_pointwise_h1"), o.trace.c_str(), smooth ? "2" : "3/2",
-                smooth ? "1" : "1/2 (error bounds; with one kink the constant moves from level to level)");
+                rates.at("err_pointwise_h1"), o.trace.c_str(), smooth ? "2" : edge ? "1" : "3/2",
+                smooth ? "1" : edge ? "none (w' is not square integrable: the H1 columns are NaN)"
+                               : "1/2 (error bounds; with one kink the constant moves from level to level)");
     std::printf("worst |int w1 - int w2| / |int w2| over all cases: mortar %.2e, pointwise %.2e\n",
                 sweep.worst_mortar, sweep.worst_pointwise);
+    print_operator_facts(facts);
 
-    // 5. Figures.
+    // 6. Figures.
     char label[96];
     std::snprintf(label, sizeof label, "%s trace, h2/h1 = %g", o.trace.c_str(), o.h_ratio);
     const chapter01::TraceFunction kink = chapter01::trace_function("kink", o.L);
     chapter01::plot_transfers(o.out, chapter01::run_transfer_case({4, 13, 0.0}, kink), kink, !o.no_plot);
-    chapter01::plot_error_vs_h(o.out, table, label, smooth ? 2.0 : 1.5, smooth ? 1.0 : 0.5, !o.no_plot);
+    chapter01::plot_error_vs_h(o.out, table, label, l2_theory, h1_theory, !o.no_plot);
     chapter01::plot_error_vs_time(o.out, table, label, !o.no_plot);
     chapter01::plot_integral_errors(o.out, sweep.smooth_curves, !o.no_plot);
     std::printf("wrote %s\n", o.out.c_str());

@@ -1,5 +1,6 @@
 #include "trace_functions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,7 +11,16 @@ constexpr double pi = 3.14159265358979323846;
 constexpr int rough_kinks = 24;
 }  // namespace
 
+std::vector<double> TraceFunction::edges() const {
+  if (!has_edges()) return {};
+  return {edge_center - edge_half_width, edge_center + edge_half_width};
+}
+
 double TraceFunction::value(double x) const {
+  if (has_edges()) {
+    const double t = (x - edge_center) / edge_half_width;
+    return std::sqrt(std::max(0.0, 1 - t * t));
+  }
   if (kinks.empty()) return 1 + x / L + 0.5 * std::sin(2.5 * pi * x / L);
   double sum = 0;
   for (double k : kinks) sum += std::fabs(x - k);
@@ -18,6 +28,10 @@ double TraceFunction::value(double x) const {
 }
 
 double TraceFunction::derivative(double x) const {
+  if (has_edges()) {
+    const double t = (x - edge_center) / edge_half_width;
+    return std::fabs(t) < 1 ? -t / (edge_half_width * std::sqrt(1 - t * t)) : 0.0;
+  }
   if (kinks.empty()) return 1 / L + 1.25 * pi / L * std::cos(2.5 * pi * x / L);
   double sum = 0;
   for (double k : kinks) sum += x < k ? -1.0 : 1.0;
@@ -34,8 +48,11 @@ TraceFunction trace_function(const std::string& name, double L) {
       const double t = 0.5 + j * golden;
       w.kinks.push_back((t - std::floor(t)) * L);
     }
+  } else if (name == "edge") {
+    w.edge_center = 0.5 * L;
+    w.edge_half_width = 0.25 * (std::sqrt(5.0) - 1) * L;
   } else if (name != "smooth") {
-    throw std::invalid_argument("unknown trace '" + name + "' (smooth, kink or rough)");
+    throw std::invalid_argument("unknown trace '" + name + "' (smooth, kink, rough or edge)");
   }
   return w;
 }

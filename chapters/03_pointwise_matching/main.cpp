@@ -50,7 +50,9 @@ int main(int argc, char** argv) {
 
     // 5. Figures.
     const bool run = !o.no_plot;
-    mortar::plot_contact_errors(o.out, study.table, "pointwise matching: errors against h",
+    char title[96];
+    std::snprintf(title, sizeof title, "pointwise matching, h2/h1 = %.3g: errors against h", o.h_ratio);
+    mortar::plot_contact_errors(o.out, study.table, title,
                                 {{0.5, 0, 0.4, "slope 1/2 (Theorem 4.1 bound)"}, {1.0, 0, 0.7, "slope 1"}}, run);
     mortar::plot_contact_error_vs_time(o.out, study.table, "pointwise matching: error against wall time", run);
     mortar::plot_pressure(o.out, finest, exact,

@@ -52,7 +52,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_choice("scene", o.scene, {"hertz", "partial", "bilateral", "signorini"}, "contact scene");
   parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
   parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
-  parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with momentum or the paper's plain one");
+  parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with Nesterov's momentum, or plain projected gradient");
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = 1 / ||B K^-1 B^T|| by power iteration", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8 unless given)",
