@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 namespace mortar {
 
@@ -22,9 +23,7 @@ Series curve_series(const InterfaceCurve& c, const std::string& title, const std
   }
   return s;
 }
-}  // namespace
 
-namespace {
 // One colour per quantity; a best approximation and a reference slope take the colour of the
 // quantity they stand beside.
 struct ErrorCurve {
@@ -36,9 +35,9 @@ const std::vector<ErrorCurve>& error_curves() {
       {"err_energy", "u, broken energy norm", "pt 7", "#1f77b4"},
       {"err_l2", "u, L^2", "pt 5", "#2ca02c"},
       {"err_pressure", "pressure, L^2(Gamma_c)", "pt 9", "#d62728"},
-      {"err_pressure_best", "  its best approximation in M_h^1", "pt 8", "#d62728", true},
-      {"err_pressure_hminus", "pressure, H^{-1/2}_h (sum_e h_e ||.||_e^2)^{1/2}", "pt 13", "#9467bd"},
-      {"err_pressure_best_hminus", "  its best approximation in M_h^1", "pt 12", "#9467bd", true},
+      {"err_pressure_best", "its L^2 best approximation in M_h^1", "pt 8", "#d62728", true},
+      {"err_pressure_hminus", "pressure, H^{-1/2}_h = (sum_e h_e ||.||_e^2)^{1/2}", "pt 13", "#9467bd"},
+      {"err_pressure_best_hminus", "the same of the L^2 best approximation", "pt 12", "#9467bd", true},
       {"err_jump", "jump [u.n], L^2(Gamma_c) / ||u.n||", "pt 11", "#ff7f0e"},
   };
   return curves;
@@ -46,7 +45,9 @@ const std::vector<ErrorCurve>& error_curves() {
 
 // C h^p through the anchor's finest point lowered by the offset, over the anchor's h range:
 // dashed, in the anchor's colour, with its label (the theorem that bounds the anchor).
-Series reference_line(const Series& anchor, const std::string& colour, const ReferenceSlope& r) {
+// Two slopes beside the same quantity share its colour; their dash patterns (dt 2, 4, 5, 6, by
+// the slope's place in the list) tell them apart.
+Series reference_line(const Series& anchor, const std::string& colour, const ReferenceSlope& r, std::size_t k) {
   std::size_t finest = 0, coarsest = 0;
   for (std::size_t i = 0; i < anchor.x.size(); ++i) {
     if (anchor.x[i] < anchor.x[finest]) finest = i;
@@ -55,7 +56,9 @@ Series reference_line(const Series& anchor, const std::string& colour, const Ref
   const double C = (1 - r.offset) * anchor.y[finest] / std::pow(anchor.x[finest], r.slope);
   char fallback[32];
   std::snprintf(fallback, sizeof fallback, "slope %g", r.slope);
-  Series line{r.label.empty() ? fallback : r.label, {}, {}, "lines", "dt 2 lw 2 lc rgb '" + colour + "'"};
+  static const int dash[] = {2, 4, 5, 6};
+  Series line{r.label.empty() ? fallback : r.label, {}, {}, "lines",
+              "dt " + std::to_string(dash[k % 4]) + " lw 1.5 lc rgb '" + colour + "'"};
   for (std::size_t i : {finest, coarsest}) {
     line.x.push_back(anchor.x[i]);
     line.y.push_back(C * std::pow(anchor.x[i], r.slope));
@@ -72,17 +75,19 @@ void plot_contact_errors(const std::string& folder, const ConvergenceTable& tabl
   fig.xlabel = "h = max(h1, h2) [m]";
   fig.ylabel = "relative error [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "outside right top";
-  fig.width = 1300;
+  fig.key = "bottom right font ',10'";  // below the data: the slopes keep the lower right free
+  fig.width = 1000;
+  fig.height = 900;
   const auto h = table.column("h");
   for (const ErrorCurve& c : error_curves())
     fig.series.push_back({c.title, h, table.column(c.column), "linespoints",
                           c.marker + " ps 1.2 lc rgb '" + c.colour + "'" + (c.best ? " lw 1 dt 3" : " lw 2")});
-  for (const ReferenceSlope& r : slopes) {
+  for (std::size_t k = 0; k < slopes.size(); ++k) {
+    const ReferenceSlope& r = slopes[k];
     if (r.anchor < 0 || r.anchor >= static_cast<int>(error_curves().size()))
       throw std::invalid_argument("plot_contact_errors: reference slope anchored to series " +
                                   std::to_string(r.anchor) + " of " + std::to_string(error_curves().size()));
-    fig.series.push_back(reference_line(fig.series[r.anchor], error_curves()[r.anchor].colour, r));
+    fig.series.push_back(reference_line(fig.series[r.anchor], error_curves()[r.anchor].colour, r, k));
   }
   write_figure(folder, "error_vs_h", fig, run);
 }

@@ -112,7 +112,8 @@ TEST(Programs, ch03_and_ch04_refuse_malformed_input) {
       {"--nu2 1", "nu2"}, {"--h-ratio 0", "h-ratio"}, {"--h-ratio -3/2", "h-ratio"},
       {"--h-ratio inf", "h-ratio"}, {"--nonmortar 3", "nonmortar"}, {"--nonmortar 0", "nonmortar"},
       {"--n0 4096 --levels 6", "levels"}, {"--saddle-solver cg", "saddle-solver"}, {"--aspect 0", "aspect"},
-      {"--H1 -1", "H1"}, {"--L 1e-6 --H1 536.870912 --H2 858.9934592 --n0 2", "levels"}};
+      {"--H1 -1", "H1"}, {"--L 1e-6 --H1 536.870912 --H2 858.9934592 --n0 2", "levels"},
+      {"--pressure-ends steep", "pressure-ends"}, {"--pressure-ends", "pressure-ends"}};
   expect_all_refused(CH03, common_bad_inputs(), own);
   expect_all_refused(CH04, common_bad_inputs(), own);
 }
