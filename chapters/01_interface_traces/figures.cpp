@@ -79,8 +79,8 @@ void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& 
   }
   fig.series.push_back({"mortar, L^2", h, table.column("err_mortar_l2"), "linespoints", "pt 5 lw 2 lc rgb '#17becf'"});
   fig.series.push_back({"pointwise, L^2", h, table.column("err_pointwise_l2"), "linespoints", "pt 4 lw 2 dt 2 lc rgb '#ff7f0e'"});
-  if (has_h1) fig.slopes.push_back({h1_rate, 0, 0.5, ""});
-  fig.slopes.push_back({l2_rate, has_h1 ? 2 : 0, 0.5, ""});
+  if (has_h1) fig.slopes.push_back({h1_rate, 0, 0.5, "", "dt 2 lw 2 lc rgb '#555555'"});
+  fig.slopes.push_back({l2_rate, has_h1 ? 2 : 0, 0.5, "", "dt 4 lw 2 lc rgb '#555555'"});
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 

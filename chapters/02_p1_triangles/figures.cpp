@@ -19,8 +19,8 @@ void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& 
   const auto h = table.column("h");
   fig.series.push_back({"energy norm", h, table.column("err_energy"), "linespoints", "pt 7 lw 2"});
   fig.series.push_back({"L^2 norm", h, table.column("err_l2"), "linespoints", "pt 5 lw 2"});
-  fig.slopes.push_back({1.0, 0, 0.4, "slope 1 (theory, energy)"});
-  fig.slopes.push_back({2.0, 1, 0.4, "slope 2 (theory, L^2)"});
+  fig.slopes.push_back({1.0, 0, 0.4, "slope 1 (theory, energy)", "dt 2 lw 2 lc rgb '#555555'"});
+  fig.slopes.push_back({2.0, 1, 0.4, "slope 2 (theory, L^2)", "dt 4 lw 2 lc rgb '#555555'"});
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 

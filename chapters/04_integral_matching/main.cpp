@@ -59,9 +59,9 @@ int main(int argc, char** argv) {
     //    H^{-1/2} (Theorem 4.2, with the inf-sup condition for lambda_h), and the pressure in
     //    L2, where the inverse inequality leaves h^{1/2}.
     mortar::plot_contact_errors(o.out, study.table, "integral matching: errors against h",
-                                {{1.0, 0, 0.4, "slope 1: energy, Theorem 4.2"},
-                                 {1.0, 4, 0.4, "slope 1: pressure in H^{-1/2}, Theorem 4.2 + inf-sup"},
-                                 {0.5, 2, 0.4, "slope 1/2: pressure in L^2, guaranteed"}},
+                                {{1.0, 0, 0.4, "slope 1: energy, Theorem 4.2", ""},
+                                 {1.0, 4, 0.4, "slope 1: pressure in H^{-1/2}, Theorem 4.2 + inf-sup", ""},
+                                 {0.5, 2, 0.4, "slope 1/2: pressure in L^2, guaranteed", ""}},
                                 run);
     mortar::plot_contact_error_vs_time(o.out, study.table, "integral matching: error against wall time", run);
     mortar::plot_pressure(o.out, finest, exact, "integral matching: contact pressure lambda_h, finest mesh", run);

@@ -197,7 +197,7 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
   timing.series.push_back(limit);
   // Only the 1/h of plain Uzawa is drawn; Nesterov's measured exponent (0.6 over five levels,
   // not settled) has no reference line to be compared with.
-  iterations.slopes.push_back({-1.0, 2, 0.0, "slope -1 (1/h)"});
+  iterations.slopes.push_back({-1.0, 2, 0.0, "slope -1 (1/h)", ""});
   mortar::write_figure(folder, "iterations", iterations, run);
   mortar::write_figure(folder, "error_vs_time", timing, run);
 }
