@@ -53,7 +53,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
   parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
   parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with Nesterov's momentum, or plain projected gradient");
-  parser.add_double("rho", o.rho, "Uzawa step rho; 0 = 1 / ||B K^-1 B^T|| by power iteration", Range::closed(0, 1e300));
+  parser.add_double("rho", o.rho, "Uzawa step rho; 0 = automatic: 1 / ||B K^-1 B^T|| (power iteration), "
+                    "for plain Uzawa then 2 / (lambda_max + lambda_min) of the active block", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8 unless given)",
                  Range::closed(2, 1 << 14));
