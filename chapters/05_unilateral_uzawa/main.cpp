@@ -15,6 +15,7 @@
 
 #include "common/contact_plots.hpp"
 #include "figures.hpp"
+#include "hertz_report.hpp"
 #include "study.hpp"
 
 int main(int argc, char** argv) {
@@ -57,33 +58,14 @@ int main(int argc, char** argv) {
         .set("complementarity_residual", f.solution.residual)
         .set("elements_in_contact", f.zone.active_elements)
         .set("reference", ref.kind);
-    if (ref.kind == "hertz") {
-      const chapter05::Hertz h = chapter05::hertz_for(o, f);
-      results.set("hertz_half_width", h.half_width())
-          .set("hertz_peak_pressure", h.peak_pressure())
-          .set("hertz_half_width_rel_error", table.column("err_half_width").back())
-          .set("hertz_peak_pressure_rel_error", table.column("err_peak_pressure").back())
-          .set("hertz_half_width_bracketed", f.zone.brackets(o.L / 2, h.half_width()));
-    }
+    if (ref.kind == "hertz") chapter05::add_hertz_results(results, o, table, f, *ref.hertz);
     table.write_csv(o.out + "/convergence.csv");
     chapter05::write_contact_csv(o.out + "/contact.csv", f);
     mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "
                 "residual %.2e\n", f.bodies.num_dofs(), f.zone.active_nodes, f.total_force,
                 f.solution.iterations, f.solution.residual);
-    if (ref.kind == "hertz") {
-      const chapter05::Hertz h = chapter05::hertz_for(o, f);
-      std::printf("Hertz at this force: half-width %.5f m (computed %.5f), peak pressure %.5g Pa "
-                  "(computed %.5g)\n", h.half_width(), f.zone.half_width(), h.peak_pressure(),
-                  table.column("max_pressure").back());
-      if (f.total_force == 0)
-        std::printf("note: the bodies do not touch (total force 0): the Hertz errors are 0 by "
-                    "convention and their rates are undefined (null)\n");
-      else if (h.half_width() > o.L / 4)
-        std::printf("note: Hertz's half-width %.3g m is more than L/4: the half-space theory "
-                    "does not describe these bodies, and the Hertz errors measure that\n",
-                    h.half_width());
-    }
+    if (ref.kind == "hertz") chapter05::print_hertz_errors(o, table, f, *ref.hertz);
     std::printf("time %.3f s, %.2f x the physical limit (%.3f s)\n", f.time_s, f.time_s / f.limit_s, f.limit_s);
 
     // 5. Every solver on both matchings, level by level: iterations, time, error.
