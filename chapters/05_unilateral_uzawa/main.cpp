@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
     if (shown.empty()) shown.push_back(finest.get());
     chapter05::plot_pressures(o.out, o, ref, exact, shown, run);
     chapter05::plot_contact_state(o.out, f, run);
-    chapter05::plot_errors(o.out, table, run);
+    if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, table, *ref.hertz, run);
+    else chapter05::plot_errors(o.out, table, run);
     if (o.compare)
       chapter05::plot_solver_comparison(o.out, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);
     std::printf("wrote %s\n", o.out.c_str());
