@@ -207,7 +207,7 @@ TEST(Programs, ch05_hertz_both_solvers_agree_and_report_every_key) {
 // finite-body reference) and the model error (the reference against half-space Hertz). Both
 // must be there and finite, and the reference must be finer than what it measures: its own
 // estimated error (the change from cells twice as long) below a third of the discretization
-// error, and its contact edges inside the finest level's discrete contact set.
+// error, and its contact edges within one element of the finest level's discrete contact set.
 TEST(Programs, ch05_hertz_reports_discretization_and_model_error_apart) {
   const std::string dir = out_dir("ch05_hertz_split");
   const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --out " + dir);
@@ -223,7 +223,7 @@ TEST(Programs, ch05_hertz_reports_discretization_and_model_error_apart) {
   std::ifstream summary(dir + "/summary.json");
   std::stringstream json;
   json << summary.rdbuf();
-  EXPECT_NE(json.str().find("\"reference_edges_bracketed\": true"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"reference_edges_within_one_element\": true"), std::string::npos) << json.str();
 }
 
 // The reference's estimated error is honest: a reference twice as fine (one more level, and

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "common/mesh.hpp"
@@ -127,11 +128,15 @@ double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::Inter
   return norm > 0 ? mortar::l2_error(p_union, q_of) / norm : 0.0;
 }
 
-bool brackets_reference_edges(const mortar::ContactZone& level, const mortar::ContactZone& reference) {
-  if (level.empty || reference.empty) return level.empty == reference.empty;
-  const auto meet = [](double lo1, double hi1, double lo2, double hi2) { return lo1 <= hi2 && lo2 <= hi1; };
-  return meet(level.left_inactive, level.left_active, reference.left_inactive, reference.left_active) &&
-         meet(level.right_active, level.right_inactive, reference.right_active, reference.right_inactive);
+double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference) {
+  if (level.empty || reference.empty)
+    return level.empty == reference.empty ? 0.0 : std::numeric_limits<double>::infinity();
+  // distance between the intervals [lo1, hi1] and [lo2, hi2], over the length of the first
+  const auto offset = [](double lo1, double hi1, double lo2, double hi2) {
+    return std::max({0.0, lo1 - hi2, lo2 - hi1}) / (hi1 - lo1);
+  };
+  return std::max(offset(level.left_inactive, level.left_active, reference.left_inactive, reference.left_active),
+                  offset(level.right_active, level.right_inactive, reference.right_active, reference.right_inactive));
 }
 
 HertzReference make_hertz_reference(const Options& o, const mortar::ManufacturedContact& exact,

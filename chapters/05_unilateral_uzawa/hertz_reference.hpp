@@ -60,10 +60,12 @@ struct HertzReference {
 HertzReference make_hertz_reference(const Options& o, const mortar::ManufacturedContact& exact,
                                     const ReferenceGrading& grading);
 
-// Do the reference's edges (each known to within its own bracket) fall between the level's
-// outermost node in contact and its first neighbour out of contact, on both sides? Both
-// brackets are closed intervals: they must meet.
-bool brackets_reference_edges(const mortar::ContactZone& level, const mortar::ContactZone& reference);
+// How far the reference's contact edges lie outside the level's discrete bracket (outermost
+// node in contact, first neighbour out of contact), in lengths of that bracket's element; the
+// larger of the two sides, 0 when both are bracketed. The reference's edges are themselves
+// brackets (of its own, much shorter, element): the distance is between the two intervals.
+// Infinite when only one of the two has contact.
+double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference);
 
 // One solve on graded meshes whose h_edge windows cover the given edges.
 UnilateralLevel solve_graded(const Options& o, const mortar::ManufacturedContact& exact,

@@ -35,7 +35,9 @@ void add_hertz_results(mortar::JsonObject& results, const Options& o, const mort
       .set("reference_half_width_rel_change", ref.half_width.change)
       .set("reference_peak_pressure_pa", ref.peak.value)
       .set("reference_peak_pressure_rel_change", ref.peak.change)
-      .set("reference_edges_bracketed", finest(table, "edges_bracketed") == 1.0)
+      // where the discrete contact set ends against the reference's edges, in elements
+      .set("reference_edge_offset_elements", finest(table, "edge_offset_elements"))
+      .set("reference_edges_within_one_element", finest(table, "edge_offset_elements") <= 1.0)
       // the finest level against Hertz directly: model and discretization error together
       .set("hertz_half_width", h.half_width())
       .set("hertz_peak_pressure", h.peak_pressure())

@@ -127,7 +127,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     const double c = o.L / 2, peak = peak_pressure(r.pressure, c), a = r.zone.half_width();
     row.push_back({"centre_pressure", pressure_at(r.pressure, c)});
     row.push_back({"peak_pressure", peak});
-    row.push_back({"edges_bracketed", brackets_reference_edges(r.zone, fb.zone) ? 1.0 : 0.0});
+    row.push_back({"edge_offset_elements", edge_offset_in_elements(r.zone, fb.zone)});
     row.push_back({"err_pressure", relative_l2_distance(r.pressure, fb.pressure)});
     row.push_back({"err_peak_pressure", relative(std::fabs(peak - fb.peak.value), fb.peak.value)});
     row.push_back({"err_half_width", relative(std::fabs(a - fb.half_width.value), fb.half_width.value)});
