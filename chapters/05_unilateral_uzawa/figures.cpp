@@ -166,17 +166,19 @@ void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable
   fig.height = 800;
   const auto h = table.column("h");
   const auto rates = table.rates();
-  const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11"};
+  const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 13"};
   int k = 0;
   for (const auto& name : table.columns())
     if (name.rfind("err_", 0) == 0) {
       std::vector<double> e = table.column(name);
       for (double& v : e) v = std::max(v, 1e-16);
       char label[160];
-      const std::string what = name == "err_pressure" ? "pressure, L2(Gamma_c)," : describe(name);
+      const std::string what = name == "err_pressure"          ? "pressure, L2(Gamma_c),"
+                               : name == "err_pressure_centre" ? "pressure, L2 over |x - L/2| < a/2,"
+                                                               : describe(name);
       std::snprintf(label, sizeof label, "%s against the reference (slope %.2f over the 3 finest)",
                     what.c_str(), rates.at(name));
-      fig.series.push_back({label, h, e, "linespoints", std::string(markers[k++ % 4]) + " lw 2"});
+      fig.series.push_back({label, h, e, "linespoints", std::string(markers[k++ % 5]) + " lw 2"});
     }
   std::vector<double> distance = table.column("hertz_distance_pressure");
   for (double& v : distance) v = std::max(v, 1e-16);

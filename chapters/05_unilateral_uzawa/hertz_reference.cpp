@@ -111,9 +111,12 @@ ReferenceGrading reference_grading(const Options& o) {
   return {h / 32, 0.2, h, 2 * h};
 }
 
-double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::InterfaceCurve& q) {
+double relative_l2_distance_on(const mortar::InterfaceCurve& p, const mortar::InterfaceCurve& q,
+                               double lo, double hi) {
   std::vector<double> x = p.x;
   x.insert(x.end(), q.x.begin(), q.x.end());
+  x.push_back(std::clamp(lo, q.x.front(), q.x.back()));
+  x.push_back(std::clamp(hi, q.x.front(), q.x.back()));
   std::sort(x.begin(), x.end());
   x.erase(std::unique(x.begin(), x.end()), x.end());
   // both are P1 on the union: the difference is P1 there, and 4-point Gauss is exact
@@ -125,7 +128,18 @@ double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::Inter
     return (1 - s) * q_union.value[e] + s * q_union.value[e + 1];
   };
   const double norm = mortar::l2_norm(q_union, q_of);
-  return norm > 0 ? mortar::l2_error(p_union, q_of) / norm : 0.0;
+  // the pieces of the union inside (lo, hi)
+  mortar::InterfaceCurve inside;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (x[k] >= lo && x[k] <= hi) {
+      inside.x.push_back(x[k]);
+      inside.value.push_back(p_union.value[k]);
+    }
+  return norm > 0 && inside.x.size() > 1 ? mortar::l2_error(inside, q_of) / norm : 0.0;
+}
+
+double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::InterfaceCurve& q) {
+  return relative_l2_distance_on(p, q, q.x.front(), q.x.back());
 }
 
 double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference) {

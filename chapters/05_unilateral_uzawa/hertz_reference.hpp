@@ -74,5 +74,9 @@ UnilateralLevel solve_graded(const Options& o, const mortar::ManufacturedContact
 // ||p - q|| / ||q|| in L2(Gamma_c) for two P1 curves on different points: exact, on the union
 // of their breakpoints.
 double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::InterfaceCurve& q);
+// The same with the error integrated over (lo, hi) only (the norm of q stays the whole of
+// Gamma_c): how much of the error lies there.
+double relative_l2_distance_on(const mortar::InterfaceCurve& p, const mortar::InterfaceCurve& q,
+                               double lo, double hi);
 
 }  // namespace chapter05

@@ -27,6 +27,14 @@ std::function<double(double)> as_function(const mortar::InterfaceCurve& c) {
 }
 
 double relative(double error, double norm) { return norm > 0 ? error / norm : 0.0; }
+
+// Where x falls in the element of the sorted points that holds it: 0 at its left node, 1 at
+// its right one (the Hertz scene: where the reference's left contact edge cuts the mesh).
+double edge_in_element(const std::vector<double>& nodes, double x) {
+  const auto it = std::upper_bound(nodes.begin(), nodes.end(), x);
+  const std::size_t e = std::clamp<std::size_t>(it - nodes.begin(), 1, nodes.size() - 1) - 1;
+  return (x - nodes[e]) / (nodes[e + 1] - nodes[e]);
+}
 }  // namespace
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
@@ -128,7 +136,11 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     row.push_back({"centre_pressure", pressure_at(r.pressure, c)});
     row.push_back({"peak_pressure", peak});
     row.push_back({"edge_offset_elements", edge_offset_in_elements(r.zone, fb.zone)});
+    row.push_back({"edge_in_element", edge_in_element(r.pressure.x, c - fb.half_width.value)});
     row.push_back({"err_pressure", relative_l2_distance(r.pressure, fb.pressure)});
+    // the part of it on the central half of the zone, away from the square-root edges
+    const double a_ref = fb.half_width.value;
+    row.push_back({"err_pressure_centre", relative_l2_distance_on(r.pressure, fb.pressure, c - a_ref / 2, c + a_ref / 2)});
     row.push_back({"err_peak_pressure", relative(std::fabs(peak - fb.peak.value), fb.peak.value)});
     row.push_back({"err_half_width", relative(std::fabs(a - fb.half_width.value), fb.half_width.value)});
     row.push_back({"err_total_force", relative(std::fabs(r.total_force - fb.force.value), fb.force.value)});
