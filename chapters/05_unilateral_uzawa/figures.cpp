@@ -160,10 +160,11 @@ void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable
   Figure fig;
   fig.title = "Hertz scene: discretization error (against the finite-body reference) and model error";
   fig.xlabel = "h = max(h1, h2) [m]";
-  fig.ylabel = "relative error [-]";
+  fig.ylabel = "relative error against the reference [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "outside below maxrows 4";
-  fig.height = 800;
+  fig.key = "outside below maxrows 8";
+  fig.width = 1000;
+  fig.height = 900;
   const auto h = table.column("h");
   const auto rates = table.rates();
   const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 13"};
@@ -175,19 +176,18 @@ void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable
       char label[160];
       const std::string what = name == "err_pressure"          ? "pressure, L2(Gamma_c),"
                                : name == "err_pressure_centre" ? "pressure, L2 over |x - L/2| < a/2,"
-                                                               : describe(name);
-      std::snprintf(label, sizeof label, "%s against the reference (slope %.2f over the 3 finest)",
-                    what.c_str(), rates.at(name));
+                                                               : describe(name) + ",";
+      std::snprintf(label, sizeof label, "%s slope %.2f over the 3 finest", what.c_str(), rates.at(name));
       fig.series.push_back({label, h, e, "linespoints", std::string(markers[k++ % 5]) + " lw 2"});
     }
   std::vector<double> distance = table.column("hertz_distance_pressure");
   for (double& v : distance) v = std::max(v, 1e-16);
-  fig.series.push_back({"pressure, L2(Gamma_c), against half-space Hertz: model + discretization", h, distance,
+  fig.series.push_back({"pressure against half-space Hertz: model + discretization", h, distance,
                         "linespoints", "pt 6 ps 1.5 dt 3 lw 2 lc rgb '#000000'"});
   const double h_lo = *std::min_element(h.begin(), h.end()), h_hi = *std::max_element(h.begin(), h.end());
-  fig.series.push_back({"model error: reference against Hertz, pressure, L2(Gamma_c)", {h_lo, h_hi},
+  fig.series.push_back({"model error: the reference against Hertz, pressure", {h_lo, h_hi},
                         {ref.model_pressure, ref.model_pressure}, "lines", "lw 2 dt 2 lc rgb '#2ca02c'"});
-  fig.series.push_back({"the reference's own error (change from cells twice as long), pressure, L2", {h_lo, h_hi},
+  fig.series.push_back({"the reference's own error estimate, pressure", {h_lo, h_hi},
                         {ref.pressure_change, ref.pressure_change}, "lines", "lw 2 dt 4 lc rgb '#7f7f7f'"});
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
