@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace mortar {
@@ -25,6 +26,9 @@ struct RectangleSpec {
   // rows towards y0 (grade_towards = Side::bottom) or, mirrored, towards y1 (Side::top).
   double grading = 1;
   Side grade_towards = Side::bottom;
+  // Explicit node columns and rows, increasing from x0 to x1 (y0 to y1), for instance from
+  // graded_nodes. When given, they replace nx (ny and grading): the grid is a tensor product.
+  std::vector<double> x_nodes, y_nodes;
   unsigned seed = 1;  // jitter is pseudo-random but reproducible
 };
 
@@ -41,6 +45,12 @@ struct Mesh {
 };
 
 Mesh rectangle_mesh(const RectangleSpec& spec);
+
+// Nodes x0 = t_0 < ... < t_N = x1 whose cells follow a target size: every cell holds the same
+// share of int dx / cell_size(x), rounded up to a whole number of cells, so a cell is about
+// as long as cell_size where it lies and never much longer. A size that grows linearly with
+// the distance to a point gives cells growing geometrically away from it.
+std::vector<double> graded_nodes(double x0, double x1, const std::function<double(double)>& cell_size);
 
 // Displaces a mesh by a nodal field u (2 dofs per node: 2 a + component) times a scale.
 Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u, double scale);

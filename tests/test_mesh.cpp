@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/mesh.hpp"
 
 using namespace mortar;
@@ -67,4 +70,73 @@ TEST(Mesh, rejects_bad_specs) {
   EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
   s.jitter = 0; s.x1 = s.x0;
   EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
+}
+
+TEST(Mesh, graded_nodes_follow_the_target_cell_size) {
+  // a constant size that divides the interval gives exactly its uniform cells
+  const std::vector<double> uniform = graded_nodes(0, 1, [](double) { return 0.125; });
+  ASSERT_EQ(uniform.size(), 9u);
+  for (std::size_t k = 0; k < uniform.size(); ++k) EXPECT_NEAR(uniform[k], 0.125 * k, 1e-12);
+  // size 0.001 + 0.1 |x - 0.3|: cells of about 0.001 at x = 0.3, growing by about 10% a cell
+  const auto size = [](double x) { return 0.001 + 0.1 * std::fabs(x - 0.3); };
+  const std::vector<double> t = graded_nodes(0, 1, size);
+  EXPECT_EQ(t.front(), 0.0);
+  EXPECT_EQ(t.back(), 1.0);
+  double smallest = 1;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    const double cell = t[k] - t[k - 1];
+    ASSERT_GT(cell, 0) << "cell " << k;
+    smallest = std::min(smallest, cell);
+    // never longer than the target anywhere in the cell (rounding up N only shortens cells)
+    EXPECT_LE(cell, 1.001 * std::max(size(t[k - 1]), size(t[k]))) << "cell " << k << " at " << t[k - 1];
+    EXPECT_GE(cell, 0.85 * std::min(size(t[k - 1]), size(t[k]))) << "cell " << k << " at " << t[k - 1];
+  }
+  EXPECT_NEAR(smallest, 0.001, 2e-4);
+  EXPECT_LT(t.size(), 120u);  // (ln(1 + 0.1 * 0.3 / 0.001) + ln(1 + 0.1 * 0.7 / 0.001)) / 0.1 + 1 = 78
+}
+
+TEST(Mesh, explicit_nodes_give_a_tensor_product_grid) {
+  RectangleSpec s;
+  s.x0 = 0; s.x1 = 2; s.y0 = -1; s.y1 = 0;
+  s.x_nodes = {0, 0.1, 0.5, 2};
+  s.y_nodes = {-1, -0.2, -0.05, 0};
+  const Mesh m = rectangle_mesh(s);
+  EXPECT_EQ(m.num_nodes(), 16);
+  EXPECT_EQ(m.triangles.size(), 18u);
+  double area = 0;
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t) {
+    EXPECT_GT(m.area(t), 0) << "triangle " << t;
+    area += m.area(t);
+  }
+  EXPECT_NEAR(area, 2.0, 1e-13);
+  const auto& top = m.nodes_on(Side::top);
+  ASSERT_EQ(top.size(), 4u);
+  for (std::size_t i = 0; i < top.size(); ++i) {
+    EXPECT_EQ(m.nodes[top[i]].x(), s.x_nodes[i]);
+    EXPECT_EQ(m.nodes[top[i]].y(), 0.0);
+  }
+  const auto& left = m.nodes_on(Side::left);
+  for (std::size_t j = 0; j < left.size(); ++j) EXPECT_EQ(m.nodes[left[j]].y(), s.y_nodes[j]);
+}
+
+TEST(Mesh, jittered_graded_nodes_stay_ordered) {
+  RectangleSpec s;
+  s.x_nodes = graded_nodes(0, 1, [](double x) { return 0.002 + 0.2 * std::fabs(x - 0.5); });
+  s.ny = 4;
+  s.jitter = 0.4;
+  const Mesh m = rectangle_mesh(s);
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t) EXPECT_GT(m.area(t), 0) << "triangle " << t;
+}
+
+TEST(Mesh, rejects_explicit_nodes_that_do_not_span_the_rectangle_or_go_back) {
+  RectangleSpec s;
+  s.x_nodes = {0, 0.5, 0.9};  // stops short of x1 = 1
+  EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
+  s.x_nodes = {0, 0.6, 0.4, 1};
+  EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
+  s.x_nodes = {0, 1};
+  s.y_nodes = {0};
+  EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
+  EXPECT_THROW(graded_nodes(0, 1, [](double) { return 0.0; }), std::invalid_argument);
+  EXPECT_THROW(graded_nodes(1, 1, [](double) { return 0.1; }), std::invalid_argument);
 }

@@ -229,10 +229,55 @@ TEST(Programs, ch05_hertz_both_solvers_agree_and_report_every_key) {
   EXPECT_GT(fp, 0.0);
   EXPECT_NEAR(fu, fp, 1e-5 * fp);
   for (const char* key : {"contact_half_width", "max_pressure", "iterations", "complementarity_residual",
-                          "hertz_half_width_rel_error", "hertz_peak_pressure_rel_error", "limit_ratio"})
+                          "hertz_half_width_rel_error", "hertz_peak_pressure_rel_error", "limit_ratio",
+                          "hertz_discretization_error", "hertz_model_error", "reference_rel_error_estimate"})
     EXPECT_TRUE(std::isfinite(summary_value(dp, "results", key))) << key;
   EXPECT_LE(summary_value(du, "results", "complementarity_residual"), 1e-8);
   EXPECT_TRUE(std::filesystem::exists(dp + "/contact.csv"));
+}
+
+// The Hertz scene reports two numbers: the discretization error (finest level against the
+// finite-body reference) and the model error (the reference against half-space Hertz). Both
+// must be there and finite, and the reference must be finer than what it measures: its own
+// estimated error (the change from cells twice as long) below a third of the discretization
+// error, and its contact edges within one element of the finest level's discrete contact set.
+TEST(Programs, ch05_hertz_reports_discretization_and_model_error_apart) {
+  const std::string dir = out_dir("ch05_hertz_split");
+  const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const double discretization = summary_value(dir, "results", "hertz_discretization_error");
+  const double model = summary_value(dir, "results", "hertz_model_error");
+  const double reference = summary_value(dir, "results", "reference_rel_error_estimate");
+  ASSERT_TRUE(std::isfinite(discretization) && std::isfinite(model) && std::isfinite(reference)) << r.output;
+  EXPECT_GT(model, 0.0);
+  EXPECT_GT(reference, 0.0);
+  EXPECT_LT(reference, discretization / 3) << r.output;
+  EXPECT_NE(r.output.find("model error (reference against half-space Hertz"), std::string::npos) << r.output;
+  std::ifstream summary(dir + "/summary.json");
+  std::stringstream json;
+  json << summary.rdbuf();
+  EXPECT_NE(json.str().find("\"reference_edges_within_one_element\": true"), std::string::npos) << json.str();
+}
+
+// The reference's estimated error is honest: a reference twice as fine (one more level, and
+// the reference is tied to the finest level) moves its force, half-width and peak pressure
+// by less than the coarser run said its own error was.
+TEST(Programs, ch05_hertz_reference_moves_less_than_its_estimated_error_when_refined) {
+  const std::string coarse = out_dir("ch05_reference_coarse"), fine = out_dir("ch05_reference_fine");
+  const ProgramRun c = run(std::string(CH05) + " --n0 8 --levels 3 --no-compare --no-plot --out " + coarse);
+  const ProgramRun f = run(std::string(CH05) + " --n0 8 --levels 4 --no-compare --no-plot --out " + fine);
+  ASSERT_EQ(c.status, 0) << c.output;
+  ASSERT_EQ(f.status, 0) << f.output;
+  const std::pair<const char*, const char*> values[] = {
+      {"reference_total_force", "reference_total_force_rel_change"},
+      {"reference_half_width_m", "reference_half_width_rel_change"},
+      {"reference_peak_pressure_pa", "reference_peak_pressure_rel_change"}};
+  for (const auto& [name, change] : values) {
+    const double vc = summary_value(coarse, "results", name), vf = summary_value(fine, "results", name);
+    const double estimate = summary_value(coarse, "results", change);
+    ASSERT_TRUE(std::isfinite(vc) && std::isfinite(vf) && std::isfinite(estimate)) << name;
+    EXPECT_LT(std::fabs(vf - vc) / vf, estimate) << name << ": " << vc << " -> " << vf;
+  }
 }
 
 TEST(Programs, ch05_rho_too_large_is_reported_with_status_1) {

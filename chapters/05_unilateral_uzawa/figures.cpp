@@ -1,9 +1,11 @@
 #include "figures.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 
 #include "common/plot.hpp"
+#include "hertz_reference.hpp"
 
 namespace chapter05 {
 
@@ -17,13 +19,44 @@ std::string describe(const std::string& column) {
   if (column == "err_l2") return "u, L^2";
   if (column == "err_pressure") return "pressure, L^2(Gamma_c)";
   if (column == "err_jump") return "jump [u.n], L^2(Gamma_c)";
-  if (column == "err_peak_pressure") return "peak pressure against Hertz";
-  if (column == "err_half_width") return "half-width against Hertz";
+  if (column == "err_peak_pressure") return "peak pressure";
+  if (column == "err_half_width") return "half-width";
   if (column == "err_total_force") return "total force";
   if (column == "err_pressure_hminus") return "pressure, mesh-dependent H^{-1/2}";
   if (column == "err_pressure_best") return "best approximation of the pressure in M_h^1, L^2";
   if (column == "err_contact_point") return "contact point |x*_h - x*| [m] (absolute)";
   return column;
+}
+
+// The reference (the truth of the discretization error) and half-space Hertz at the
+// reference's force (the model): the distance between these two is the model error.
+void add_hertz_curves(Figure& fig, const Options& o, const HertzReference& ref) {
+  Series reference{"finite-body reference (graded mesh, " + std::to_string(ref.fine ? ref.fine->bodies.num_dofs() : 0) + " dofs)",
+                   ref.pressure.x, ref.pressure.value, "lines", "lw 3 lc rgb '#000000'"};
+  const Hertz h = hertz_at_force(o.E1, o.nu1, o.E2, o.nu2, o.R, ref.force.value);
+  Series hertz{"half-space Hertz at the reference's force", {}, {}, "lines", "lw 2 dt 2 lc rgb '#2ca02c'"};
+  for (int i = 0; i <= 2000; ++i) {
+    const double x = o.L * i / 2000.0;
+    hertz.x.push_back(x);
+    hertz.y.push_back(h.pressure(x - o.L / 2));
+  }
+  fig.series.push_back(reference);
+  fig.series.push_back(hertz);
+}
+
+// Drops the points of every series outside [lo, hi] (gnuplot would autoscale to all of them).
+void keep_window(Figure& fig, double lo, double hi) {
+  for (Series& s : fig.series) {
+    Series kept = s;
+    kept.x.clear();
+    kept.y.clear();
+    for (std::size_t k = 0; k < s.x.size(); ++k)
+      if (s.x[k] >= lo && s.x[k] <= hi) {
+        kept.x.push_back(s.x[k]);
+        kept.y.push_back(s.y[k]);
+      }
+    s = kept;
+  }
 }
 
 double at(const mortar::InterfaceCurve& c, double x) {
@@ -54,17 +87,17 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
   fig.key = "outside below maxrows 3";
   fig.height = 720;
   Series truth{"", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
-  const UnilateralLevel& first = *levels.front();
-  for (int i = 0; i <= 1000; ++i) {
-    const double x = o.L * i / 1000.0;
-    truth.x.push_back(x);
-    if (ref.kind == "hertz") truth.y.push_back(hertz_for(o, first).pressure(x - o.L / 2));
-    else if (ref.kind == "exact") truth.y.push_back(exact.pressure(x));
-    else truth.y.push_back(at(ref.finer->pressure, x));
+  if (ref.kind == "hertz") {
+    add_hertz_curves(fig, o, *ref.hertz);
+  } else {
+    for (int i = 0; i <= 1000; ++i) {
+      const double x = o.L * i / 1000.0;
+      truth.x.push_back(x);
+      truth.y.push_back(ref.kind == "exact" ? exact.pressure(x) : at(ref.finer->pressure, x));
+    }
+    truth.title = ref.kind == "exact" ? "exact -sigma_N" : "reference, two levels finer";
+    fig.series.push_back(truth);
   }
-  truth.title = ref.kind == "hertz" ? "plane-strain Hertz at the computed force"
-                                    : ref.kind == "exact" ? "exact -sigma_N" : "reference, two levels finer";
-  fig.series.push_back(truth);
   const char* styles[] = {"pt 7 ps 0.7 lc rgb '#1f77b4'", "pt 6 ps 0.8 lc rgb '#d62728'"};
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const UnilateralLevel& r = *levels[k];
@@ -73,8 +106,10 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
                                  : "pointwise matching: nodal force / tributary length";
     fig.series.push_back({name, r.pressure.x, r.pressure.value, "linespoints", styles[k % 2]});
   }
-  if (ref.kind == "hertz")
-    fig.title += ", Hertz half-width a = " + std::to_string(hertz_for(o, first).half_width()).substr(0, 6) + " m";
+  if (ref.kind == "hertz") {  // the contact zone only: 4 reference half-widths around L/2
+    fig.title = "contact pressure on the finest mesh against the finite-body reference, scene hertz";
+    keep_window(fig, o.L / 2 - 2 * ref.hertz->half_width.value, o.L / 2 + 2 * ref.hertz->half_width.value);
+  }
   mortar::write_figure(folder, "pressure", fig, run);
 }
 
@@ -152,6 +187,43 @@ void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable&
                         "dt 2 lw 2 lc rgb '#2ca02c'"});
   fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1: C (h1^{1/4} + h2))", "dt 4 lw 2 lc rgb '#9467bd'"});
   mortar::write_figure(folder, "theorem_5_1", fig, run);
+}
+
+void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable& table,
+                       const HertzReference& ref, bool run) {
+  Figure fig;
+  fig.title = "Hertz scene: discretization error (against the finite-body reference) and model error";
+  fig.xlabel = "h = max(h1, h2) [m]";
+  fig.ylabel = "relative error against the reference [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "outside below maxrows 8";
+  fig.width = 1000;
+  fig.height = 900;
+  const auto h = table.column("h");
+  const auto rates = table.rates();
+  const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 13"};
+  int k = 0;
+  for (const auto& name : table.columns())
+    if (name.rfind("err_", 0) == 0) {
+      std::vector<double> e = table.column(name);
+      for (double& v : e) v = std::max(v, 1e-16);
+      char label[160];
+      const std::string what = name == "err_pressure"          ? "pressure, L2(Gamma_c),"
+                               : name == "err_pressure_centre" ? "pressure, L2 over |x - L/2| < a/2,"
+                                                               : describe(name) + ",";
+      std::snprintf(label, sizeof label, "%s slope %.2f over the 3 finest", what.c_str(), rates.at(name));
+      fig.series.push_back({label, h, e, "linespoints", std::string(markers[k++ % 5]) + " lw 2"});
+    }
+  std::vector<double> distance = table.column("hertz_distance_pressure");
+  for (double& v : distance) v = std::max(v, 1e-16);
+  fig.series.push_back({"pressure against half-space Hertz: model + discretization", h, distance,
+                        "linespoints", "pt 6 ps 1.5 dt 3 lw 2 lc rgb '#000000'"});
+  const double h_lo = *std::min_element(h.begin(), h.end()), h_hi = *std::max_element(h.begin(), h.end());
+  fig.series.push_back({"model error: the reference against Hertz, pressure", {h_lo, h_hi},
+                        {ref.model_pressure, ref.model_pressure}, "lines", "lw 2 dt 2 lc rgb '#2ca02c'"});
+  fig.series.push_back({"the reference's own error estimate, pressure", {h_lo, h_hi},
+                        {ref.pressure_change, ref.pressure_change}, "lines", "lw 2 dt 4 lc rgb '#7f7f7f'"});
+  mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 
 void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,

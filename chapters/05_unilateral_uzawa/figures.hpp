@@ -15,6 +15,10 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
                     const std::vector<const UnilateralLevel*>& levels, bool run);
 void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run);
 void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run);
+// The Hertz scene: each error against the reference, the distance to Hertz, the model error
+// and the reference's own error; no theorem bounds these, so no theorem's slope is drawn.
+void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable& table,
+                       const HertzReference& ref, bool run);
 // Signorini scene: the energy error of both matchings against h with slopes 1/4 and 1.
 void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable& table,
                       const std::string& matching, const std::vector<SolverRun>& runs, bool run);

@@ -15,6 +15,7 @@
 
 #include "common/contact_plots.hpp"
 #include "figures.hpp"
+#include "hertz_report.hpp"
 #include "study.hpp"
 
 int main(int argc, char** argv) {
@@ -59,14 +60,7 @@ int main(int argc, char** argv) {
         .set("complementarity_residual", f.solution.residual)
         .set("elements_in_contact", f.zone.active_elements)
         .set("reference", ref.kind);
-    if (ref.kind == "hertz") {
-      const chapter05::Hertz h = chapter05::hertz_for(o, f);
-      results.set("hertz_half_width", h.half_width())
-          .set("hertz_peak_pressure", h.peak_pressure())
-          .set("hertz_half_width_rel_error", table.column("err_half_width").back())
-          .set("hertz_peak_pressure_rel_error", table.column("err_peak_pressure").back())
-          .set("hertz_half_width_bracketed", f.zone.brackets(o.L / 2, h.half_width()));
-    }
+    if (ref.kind == "hertz") chapter05::add_hertz_results(results, o, table, f, *ref.hertz);
     if (ref.kind == "exact")
       for (const std::string key : {"err_energy", "err_l2", "err_pressure", "err_pressure_hminus", "err_pressure_best",
                                     "err_total_force"})
@@ -84,19 +78,7 @@ int main(int argc, char** argv) {
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "
                 "residual %.2e\n", f.bodies.num_dofs(), f.zone.active_nodes, f.total_force,
                 f.solution.iterations, f.solution.residual);
-    if (ref.kind == "hertz") {
-      const chapter05::Hertz h = chapter05::hertz_for(o, f);
-      std::printf("Hertz at this force: half-width %.5f m (computed %.5f), peak pressure %.5g Pa "
-                  "(computed %.5g)\n", h.half_width(), f.zone.half_width(), h.peak_pressure(),
-                  table.column("max_pressure").back());
-      if (f.total_force == 0)
-        std::printf("note: the bodies do not touch (total force 0): the Hertz errors are 0 by "
-                    "convention and their rates are undefined (null)\n");
-      else if (h.half_width() > o.L / 4)
-        std::printf("note: Hertz's half-width %.3g m is more than L/4: the half-space theory "
-                    "does not describe these bodies, and the Hertz errors measure that\n",
-                    h.half_width());
-    }
+    if (ref.kind == "hertz") chapter05::print_hertz_errors(o, table, f, *ref.hertz);
     if (ref.kind == "exact") table.print_local_rates();
     if (o.scene == "signorini")
       std::printf("contact point: exact x* = %.6f m, computed %.6f m (error %.3g m, h1 = %.3g m)\n",
@@ -120,7 +102,8 @@ int main(int argc, char** argv) {
     if (shown.empty()) shown.push_back(finest.get());
     chapter05::plot_pressures(o.out, o, ref, exact, shown, run);
     chapter05::plot_contact_state(o.out, f, run);
-    chapter05::plot_errors(o.out, table, run);
+    if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, table, *ref.hertz, run);
+    else chapter05::plot_errors(o.out, table, run);
     if (o.scene == "signorini") chapter05::plot_theorem_5_1(o.out, table, o.matching, runs, run);
     if (o.compare)
       chapter05::plot_solver_comparison(o.out, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);

@@ -39,11 +39,15 @@ UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matchi
 mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver,
                                             bool accelerate);
 
-// What a level is measured against: Hertz at the computed force, the exact solution of the
-// bilateral scene, or (partial) a reference solution two levels finer, stated as such.
+struct HertzReference;  // hertz_reference.hpp
+
+// What a level is measured against: (hertz) a finite-body reference on graded meshes, with
+// half-space Hertz compared with that reference for the model error; the exact solution of
+// the bilateral scene; or (partial) a reference solution two levels finer, stated as such.
 struct Reference {
   std::string kind;  // "hertz", "exact" or "finer mesh"
   std::unique_ptr<UnilateralLevel> finer;
+  std::shared_ptr<const HertzReference> hertz;
 };
 Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact);
 

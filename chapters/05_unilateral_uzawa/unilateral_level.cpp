@@ -8,8 +8,13 @@ namespace chapter05 {
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
                                        const mortar::ManufacturedContact& exact) {
-  UnilateralLevel r{mortar::make_two_bodies(setup.geometry, exact.material(0), exact.material(1)),
-                    {}, {}, {}, {}, {}, {}, {}, {}};
+  return solve_unilateral_level(mortar::make_two_bodies(setup.geometry, exact.material(0), exact.material(1)),
+                                setup, exact);
+}
+
+UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const UnilateralSetup& setup,
+                                       const mortar::ManufacturedContact& exact) {
+  UnilateralLevel r{std::move(bodies), {}, {}, {}, {}, {}, {}, {}, {}};
   const mortar::Stopwatch clock;  // everything but the mesh
   const UnilateralScene scene = make_scene(setup.scene, r.bodies, exact);
   r.gap = scene.gap;

@@ -34,5 +34,8 @@ struct UnilateralLevel {
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
                                        const mortar::ManufacturedContact& exact);
+// The same on bodies meshed by the caller (setup.geometry is then not used): graded meshes.
+UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const UnilateralSetup& setup,
+                                       const mortar::ManufacturedContact& exact);
 
 }  // namespace chapter05
