@@ -28,8 +28,9 @@ UnilateralSetup reference_setup(const Options& o) {
   return s;
 }
 
-// The discrete contact set of integral matching: the edge lies between the outermost node in
-// contact and its neighbour out of contact (checked against every finer solve).
+// The bracket of each edge in a discrete contact set: the outermost node in contact and its
+// neighbour out of contact. The true edge lies in it or within half an element of it (largest
+// `edge_offset_elements` seen: 0.47), which is why graded_bodies widens it by half on each side.
 ZoneEdges edges_of(const mortar::ContactZone& z) {
   if (z.empty) throw std::runtime_error("Hertz reference: the bodies do not touch");
   return {z.left_inactive, z.left_active, z.right_active, z.right_inactive};
