@@ -30,7 +30,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
   r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
   r.u = system.expand(r.solution.u);
   r.time_s = clock.seconds();
-  r.limit_s = mortar::two_body_limit(r.bodies, scene.data);
+  if (setup.measure_limit) r.limit_s = mortar::two_body_limit(r.bodies, scene.data);
 
   r.pressure = mortar::contact_pressure(r.gamma, r.constraints, r.solution.lambda);
   r.jump = mortar::normal_jump(r.bodies, r.gamma, r.u);

@@ -16,6 +16,7 @@ struct UnilateralSetup {
   int nonmortar = 0;  // body index
   mortar::ContactSolverOptions solver;
   SceneParameters scene;
+  bool measure_limit = true;  // time the physical limit (one more assembly and Cholesky of K)
 };
 
 struct UnilateralLevel {
