@@ -38,6 +38,20 @@ double InterfaceTrace::evaluate(const std::vector<double>& values, double point)
   return (1 - t) * values[e] + t * values[e + 1];
 }
 
+Eigen::SparseMatrix<double> InterfaceTrace::mass_matrix() const {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int e = 0; e < num_elements(); ++e) {
+    const double h = x[e + 1] - x[e];
+    entries.emplace_back(e, e, h / 3);
+    entries.emplace_back(e + 1, e + 1, h / 3);
+    entries.emplace_back(e, e + 1, h / 6);
+    entries.emplace_back(e + 1, e, h / 6);
+  }
+  Eigen::SparseMatrix<double> mass(num_nodes(), num_nodes());
+  mass.setFromTriplets(entries.begin(), entries.end());
+  return mass;
+}
+
 InterfaceTrace trace_on_side(const Mesh& mesh, Side side) {
   InterfaceTrace t;
   for (int a : mesh.nodes_on(side)) {

@@ -2,6 +2,7 @@
 // P1 hat functions phi^l_j they carry (paper section 3, the 1D mesh T_c^l).
 #pragma once
 
+#include <Eigen/Sparse>
 #include <vector>
 
 #include "common/mesh.hpp"
@@ -20,6 +21,8 @@ struct InterfaceTrace {
   int element_containing(double point) const;
   // Value of a nodal P1 function at a point of Gamma_c.
   double evaluate(const std::vector<double>& values, double point) const;
+  // The P1 mass matrix (int phi_i phi_j)_{ij} of the trace: h/3 and h/6 per element.
+  Eigen::SparseMatrix<double> mass_matrix() const;
 };
 
 // Trace of a 2D mesh on one of its sides; x is the coordinate along Gamma_c (horizontal).

@@ -108,23 +108,17 @@ InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<
   if (C.cols() != t.num_nodes())
     throw std::invalid_argument("l2_projection: M_h has " + std::to_string(C.cols()) + " trace nodes, the trace " +
                                 std::to_string(t.num_nodes()));
-  // P1 mass matrix of the trace and the load (int p phi_j)_j
-  std::vector<Eigen::Triplet<double>> mass;
+  // the load (int p phi_j)_j, against the P1 mass matrix of the trace
   Eigen::VectorXd load = Eigen::VectorXd::Zero(t.num_nodes());
   for (int e = 0; e < t.num_elements(); ++e) {
     const double h = t.x[e + 1] - t.x[e];
-    mass.emplace_back(e, e, h / 3);
-    mass.emplace_back(e + 1, e + 1, h / 3);
-    mass.emplace_back(e, e + 1, h / 6);
-    mass.emplace_back(e + 1, e, h / 6);
     composite_rule(t.x[e], t.x[e + 1], {}, [&](double x, double w) {
       const double s = (x - t.x[e]) / h;
       load[e] += w * (1 - s) * p(x);
       load[e + 1] += w * s * p(x);
     });
   }
-  Eigen::SparseMatrix<double> M_phi(t.num_nodes(), t.num_nodes());
-  M_phi.setFromTriplets(mass.begin(), mass.end());
+  const Eigen::SparseMatrix<double> M_phi = t.mass_matrix();
   // Gram matrix of the psi_i: (psi_i, psi_k) = (C M_phi C^T)_ik, SPD since the psi_i are independent
   const Eigen::SparseMatrix<double> gram = C * M_phi * C.transpose();
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(gram);

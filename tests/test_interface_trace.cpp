@@ -31,3 +31,15 @@ TEST(InterfaceTrace, rejects_bad_grids) {
   EXPECT_THROW(uniform_trace(-1.0, 3), std::invalid_argument);
   EXPECT_THROW(uniform_trace(1.0, 3, 0.9), std::invalid_argument);
 }
+
+TEST(InterfaceTrace, mass_matrix_integrates_products_of_hats_exactly) {
+  const InterfaceTrace t = uniform_trace(2.0, 7, 0.3, 5);
+  const Eigen::SparseMatrix<double> M = t.mass_matrix();
+  // 1^T M 1 = int 1 = length; x^T M 1 = int x; x^T M x = int x^2 (P1 interpolates 1 and x)
+  Eigen::VectorXd one = Eigen::VectorXd::Ones(t.num_nodes()), x(t.num_nodes());
+  for (int j = 0; j < t.num_nodes(); ++j) x[j] = t.x[j];
+  EXPECT_NEAR(one.dot(M * one), 2.0, 1e-14);
+  EXPECT_NEAR(x.dot(M * one), 2.0, 1e-14);
+  EXPECT_NEAR(x.dot(M * x), 8.0 / 3, 1e-13);
+  EXPECT_LT((Eigen::MatrixXd(M) - Eigen::MatrixXd(M).transpose()).norm(), 1e-16);
+}

@@ -97,16 +97,7 @@ double one_grid_limit(const mortar::InterfaceTrace& t1) {
   double best = std::numeric_limits<double>::infinity();
   for (int r = 0; r < repeats; ++r) {
     const mortar::Stopwatch clock;
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int e = 0; e < t1.num_elements(); ++e) {
-      const double h = t1.x[e + 1] - t1.x[e];
-      entries.emplace_back(e, e, h / 3);
-      entries.emplace_back(e + 1, e + 1, h / 3);
-      entries.emplace_back(e, e + 1, h / 6);
-      entries.emplace_back(e + 1, e, h / 6);
-    }
-    mortar::SparseMatrix mass(t1.num_nodes(), t1.num_nodes());
-    mass.setFromTriplets(entries.begin(), entries.end());
+    const mortar::SparseMatrix mass = t1.mass_matrix();
     mortar::SpdSolver solver;
     solver.factorize(mass);
     solver.solve(Eigen::VectorXd::Ones(t1.num_nodes()));

@@ -141,7 +141,9 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
   Figure fig;
   fig.title = "relative errors against h (chosen matching and solver)";
   fig.xlabel = "h = max(h1, h2) [m]";
-  fig.ylabel = "relative error [-] (contact point: [m])";
+  const auto& columns = table.columns();
+  const bool has_point = std::find(columns.begin(), columns.end(), "err_contact_point") != columns.end();
+  fig.ylabel = has_point ? "relative error [-] (contact point: [m])" : "relative error [-]";
   fig.log_x = fig.log_y = true;
   fig.key = "outside right top";  // beside the data, never over it
   fig.width = 1250;
