@@ -52,10 +52,14 @@ double edge_in_element(const std::vector<double>& nodes, double x) {
 }
 }  // namespace
 
-double contact_point_error(const UnilateralLevel& r, double L) {
+double computed_contact_point(const UnilateralLevel& r) {
   // the discrete contact zone ends halfway between its last active node and the next one
   if (r.zone.empty) return std::numeric_limits<double>::quiet_NaN();
-  return std::fabs(0.5 * (r.zone.right_active + r.zone.right_inactive) - mortar::signorini_contact_point(L));
+  return 0.5 * (r.zone.right_active + r.zone.right_inactive);
+}
+
+double contact_point_error(const UnilateralLevel& r, double L) {
+  return std::fabs(computed_contact_point(r) - mortar::signorini_contact_point(L));
 }
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {

@@ -54,8 +54,9 @@ Reference make_reference(const Options& o, const mortar::ManufacturedContact& ex
 mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
                       const mortar::ManufacturedContact& exact);
 Hertz hertz_for(const Options& o, const UnilateralLevel& r);
-// Signorini scene: |x*_h - x*|, x*_h the right edge of the discrete contact zone (the midpoint
-// between its last active node and the next node); NaN when nothing touches.
+// Signorini scene: x*_h, the right edge of the discrete contact zone (the midpoint between its
+// last active node and the next node), and |x*_h - x*|; NaN when nothing touches.
+double computed_contact_point(const UnilateralLevel& r);
 double contact_point_error(const UnilateralLevel& r, double L);
 
 // One line of solvers.csv: a (matching, solver) pair on one level.
