@@ -73,7 +73,7 @@ std::map<std::string, double> ConvergenceTable::rates(int levels) const {
   return out;
 }
 
-void ConvergenceTable::write_csv(const std::string& path) const {
+void ConvergenceTable::write_csv(const std::string& path, bool blank_undefined) const {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write " + path);
   for (std::size_t c = 0; c < columns_.size(); ++c) f << (c ? "," : "") << columns_[c];
@@ -81,7 +81,8 @@ void ConvergenceTable::write_csv(const std::string& path) const {
   char buf[32];
   for (const auto& r : rows_) {
     for (std::size_t c = 0; c < r.size(); ++c) {
-      std::snprintf(buf, sizeof buf, "%.10g", r[c]);
+      if (blank_undefined && !std::isfinite(r[c])) buf[0] = '\0';
+      else std::snprintf(buf, sizeof buf, "%.10g", r[c]);
       f << (c ? "," : "") << buf;
     }
     f << "\n";

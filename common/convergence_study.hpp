@@ -31,12 +31,15 @@ class ConvergenceTable {
   // Slope of log(err_*) vs log(h) over the last `levels` rows, for every err_ column.
   std::map<std::string, double> rates(int levels = 3) const;
 
-  void write_csv(const std::string& path) const;
+  // blank_undefined: a NaN (an undefined rate) is written as an empty field; otherwise every
+  // value must be a number, and a NaN is written as such for the contract check to catch.
+  void write_csv(const std::string& path, bool blank_undefined = false) const;
 
   // Local rates: for each level k >= 1 and every err_ column, the slope between levels k - 1
   // and k, log(e_k / e_{k-1}) / log(h_k / h_{k-1}). They show whether a rate has settled,
   // which a fit over three levels hides. Written as local_rates.csv (columns h, then the err_
-  // columns), and printed as a table.
+  // columns; a rate between errors that are 0 is undefined and left blank), and printed as a
+  // table.
   ConvergenceTable local_rates() const;
   void print_local_rates() const;
 

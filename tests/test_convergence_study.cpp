@@ -44,6 +44,18 @@ TEST(ConvergenceStudy, local_rates_are_level_to_level_slopes) {
   EXPECT_DOUBLE_EQ(local.column("h")[3], 0.025);
 }
 
+TEST(ConvergenceStudy, local_rates_between_zero_errors_are_written_blank) {
+  ConvergenceTable t;
+  for (double h : {0.2, 0.1, 0.05}) t.add({{"h", h}, {"err_zero", 0.0}, {"err_a", h}});
+  const std::string path = (std::filesystem::temp_directory_path() / "local_rates_blank.csv").string();
+  t.local_rates().write_csv(path, true);
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  EXPECT_EQ(s.str().find("nan"), std::string::npos) << s.str();
+  EXPECT_NE(s.str().find(",,1"), std::string::npos) << "an undefined rate is an empty field:\n" << s.str();
+}
+
 TEST(ConvergenceStudy, rows_must_repeat_the_columns) {
   ConvergenceTable t;
   t.add({{"h", 1.0}, {"err_a", 1.0}});

@@ -144,12 +144,16 @@ double relative_l2_distance(const mortar::InterfaceCurve& p, const mortar::Inter
   return relative_l2_distance_on(p, q, q.x.front(), q.x.back());
 }
 
-double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference) {
-  if (level.empty || reference.empty)
-    return level.empty == reference.empty ? 0.0 : std::numeric_limits<double>::infinity();
+double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference, double h) {
+  if (level.empty && reference.empty) return 0.0;
+  if (level.empty || reference.empty) {
+    const mortar::ContactZone& z = level.empty ? reference : level;
+    return (z.right_active - z.left_active) / h;
+  }
   // distance between the intervals [lo1, hi1] and [lo2, hi2], over the length of the first
-  const auto offset = [](double lo1, double hi1, double lo2, double hi2) {
-    return std::max({0.0, lo1 - hi2, lo2 - hi1}) / (hi1 - lo1);
+  // (or h where the first is a single node, at an end of Gamma_c)
+  const auto offset = [h](double lo1, double hi1, double lo2, double hi2) {
+    return std::max({0.0, lo1 - hi2, lo2 - hi1}) / (hi1 > lo1 ? hi1 - lo1 : h);
   };
   return std::max(offset(level.left_inactive, level.left_active, reference.left_inactive, reference.left_active),
                   offset(level.right_active, level.right_inactive, reference.right_active, reference.right_inactive));

@@ -64,8 +64,10 @@ HertzReference make_hertz_reference(const Options& o, const mortar::Manufactured
 // node in contact, first neighbour out of contact), in lengths of that bracket's element; the
 // larger of the two sides, 0 when both are bracketed. The reference's edges are themselves
 // brackets (of its own, much shorter, element): the distance is between the two intervals.
-// Infinite when only one of the two has contact.
-double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference);
+// h is the level's element length, the unit where a bracket has none (a zone that reaches an
+// end of Gamma_c); when only one of the two has contact, the whole zone that the other misses
+// counts: its width over h.
+double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference, double h);
 
 // One solve on graded meshes whose h_edge windows cover the given edges.
 UnilateralLevel solve_graded(const Options& o, const mortar::ManufacturedContact& exact,

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
           .set("contact_point_error_m", chapter05::contact_point_error(f, o.L));
     }
     table.write_csv(o.out + "/convergence.csv");
-    table.local_rates().write_csv(o.out + "/local_rates.csv");
+    table.local_rates().write_csv(o.out + "/local_rates.csv", true);
     chapter05::write_contact_csv(o.out + "/contact.csv", f);
     mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "

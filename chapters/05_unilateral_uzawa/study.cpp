@@ -167,7 +167,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     const double c = o.L / 2, peak = peak_pressure(r.pressure, c), a = r.zone.half_width();
     row.push_back({"centre_pressure", pressure_at(r.pressure, c)});
     row.push_back({"peak_pressure", peak});
-    row.push_back({"edge_offset_elements", edge_offset_in_elements(r.zone, fb.zone)});
+    row.push_back({"edge_offset_elements", edge_offset_in_elements(r.zone, fb.zone, r.gamma.nonmortar_trace.max_element_length())});
     row.push_back({"edge_in_element", edge_in_element(r.pressure.x, c - fb.half_width.value)});
     row.push_back({"err_pressure", relative_l2_distance(r.pressure, fb.pressure)});
     // the part of it on the central half of the zone, away from the square-root edges
