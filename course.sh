@@ -80,10 +80,13 @@ run_tests() {
   cmake --build build-fallback -j "$jobs" --target test_spd_solver test_dirichlet test_programs
   ctest --test-dir build-fallback --output-on-failure -j "$jobs" -R 'SpdSolver|Dirichlet|Programs.ch02'
   check_skeletons_fail
-  # The unit tests once more under AddressSanitizer and UndefinedBehaviorSanitizer.
+  # The unit tests once more under AddressSanitizer and UndefinedBehaviorSanitizer, then the
+  # programs built the same way: their --quick studies, the hard cases and the fuzzed command lines.
   configure build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORTAR_SANITIZE=ON
-  cmake --build build-sanitize -j "$jobs" --target unit_tests
+  cmake --build build-sanitize -j "$jobs" --target unit_tests sanitized_programs
   ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L unit
+  ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L sanitized_programs
+  cat build-sanitize/tests/fuzz_runs/*.counts
 }
 
 # Every untouched exercise skeleton must fail its test (the solutions pass in the main run).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/quadrature.hpp"
@@ -68,25 +69,42 @@ void check_curve(const InterfaceCurve& c, const InterfaceTrace& t) {
                                 std::to_string(t.x.front()) + ", " + std::to_string(t.x.back()) + "]");
 }
 
-// ||p - p_h||^2_{L2(e)} for every element e of the non-mortar trace.
-std::vector<double> element_squares(const InterfaceTrace& t, const InterfaceCurve& p_h,
-                                    const std::function<double(double)>& p) {
+// ||p - p_h||^2_{L2(e)} for every element e of the non-mortar trace, as scale^2 * squares[e].
+// A pressure scales with E, and its square overflows at E = 1e300 and underflows at E = 1e-160:
+// the differences are divided by the largest of them before squaring.
+struct ElementSquares {
+  double scale = 0;  // the largest |p - p_h| at the quadrature points
+  std::vector<double> squares;
+};
+ElementSquares element_squares(const InterfaceTrace& t, const InterfaceCurve& p_h,
+                               const std::function<double(double)>& p) {
   const CurveReader reader{p_h};
-  std::vector<double> squares(static_cast<std::size_t>(t.num_elements()), 0.0);
+  std::vector<std::vector<std::pair<double, double>>> points(static_cast<std::size_t>(t.num_elements()));
+  ElementSquares s;
+  bool nan = false;
   for (int e = 0; e < t.num_elements(); ++e)
     composite_rule(t.x[e], t.x[e + 1], reader.breakpoints_inside(t.x[e], t.x[e + 1]), [&](double x, double w) {
       const double d = p(x) - reader(x);
-      squares[e] += w * d * d;
+      nan = nan || std::isnan(d);
+      s.scale = std::max(s.scale, std::fabs(d));
+      points[e].push_back({d, w});
     });
-  return squares;
+  if (nan) s.scale = std::nan("");  // passed on, not hidden
+  s.squares.assign(points.size(), 0.0);
+  if (!(s.scale > 0) || std::isinf(s.scale)) return s;
+  for (std::size_t e = 0; e < points.size(); ++e)
+    for (const auto& [d, w] : points[e]) s.squares[e] += w * (d / s.scale) * (d / s.scale);
+  return s;
 }
 
 // The norms of one error, from its element squares: whole, interior, ends, mesh-dependent.
 struct SplitNorms {
   double whole = 0, interior = 0, ends = 0, hminus = 0;
 };
-SplitNorms split_norms(const InterfaceTrace& t, const std::vector<double>& squares) {
+SplitNorms split_norms(const InterfaceTrace& t, const ElementSquares& error) {
   const int N = t.num_elements();
+  const std::vector<double>& squares = error.squares;
+  if (!(error.scale > 0) || std::isinf(error.scale)) return {error.scale, error.scale, error.scale, error.scale};
   SplitNorms s;
   for (int e = 0; e < N; ++e) {
     const bool end = e == 0 || e == N - 1;  // where M_h^1 is constant (paper: a1 or a2 in T)
@@ -94,10 +112,10 @@ SplitNorms split_norms(const InterfaceTrace& t, const std::vector<double>& squar
     s.whole += squares[e];
     s.hminus += (t.x[e + 1] - t.x[e]) * squares[e];
   }
-  s.whole = std::sqrt(s.whole);
-  s.interior = std::sqrt(s.interior);
-  s.ends = std::sqrt(s.ends);
-  s.hminus = std::sqrt(s.hminus);
+  s.whole = error.scale * std::sqrt(s.whole);
+  s.interior = error.scale * std::sqrt(s.interior);
+  s.ends = error.scale * std::sqrt(s.ends);
+  s.hminus = error.scale * std::sqrt(s.hminus);
   return s;
 }
 }  // namespace

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "common/contact_fields.hpp"
 
 using namespace mortar;
@@ -48,5 +51,24 @@ TEST(ContactFields, jump_is_u2y_minus_u1y_on_the_merged_grid) {
     for (std::size_t k = 0; k < j.x.size(); ++k) EXPECT_NEAR(j.value[k], 2.0 * j.x[k], 1e-14);
     EXPECT_NEAR(l2_error(j, [](double x) { return 2.0 * x; }), 0.0, 1e-14);
     EXPECT_NEAR(l2_norm(j, [](double x) { return 2.0 * x; }), 2.0 / std::sqrt(3.0), 1e-14);
+  }
+}
+
+// A pressure scales with E, and E may be given in any unit: the L2 distance of a pressure
+// to an exact one must scale with it, also where its square would overflow or underflow.
+TEST(ContactFields, l2_error_and_norm_scale_with_the_pressure_from_1e_minus300_to_1e300) {
+  const std::vector<double> x = {0.0, 0.15, 0.4, 0.55, 0.8, 1.0};
+  const auto exact = [](double t) { return 1.5 + std::cos(4.7 * t); };
+  InterfaceCurve unit{x, {}};
+  for (double t : x) unit.value.push_back(exact(t) + 0.1 * t * t);
+  const double error = l2_error(unit, exact), norm = l2_norm(unit, exact);
+  ASSERT_GT(error, 0.0);
+  for (double scale : {1e-300, 1e-160, 1e160, 1e300}) {
+    InterfaceCurve scaled = unit;
+    for (double& v : scaled.value) v *= scale;
+    const auto scaled_exact = [&](double t) { return scale * exact(t); };
+    // the same arithmetic up to rounding: 1e-13 leaves room for the divisions by the scale
+    EXPECT_NEAR(l2_error(scaled, scaled_exact) / scale, error, 1e-13 * error) << "scale " << scale;
+    EXPECT_NEAR(l2_norm(scaled, scaled_exact) / scale, norm, 1e-13 * norm) << "scale " << scale;
   }
 }

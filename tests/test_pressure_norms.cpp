@@ -184,3 +184,23 @@ TEST(PressureNorms, a_curve_that_does_not_span_the_trace_is_refused) {
   EXPECT_THROW(pressure_errors(g, InterfaceCurve{{0.0, 1.0}, {1.0}}, sloped), std::invalid_argument);
   EXPECT_THROW(pressure_errors(g, InterfaceCurve{{0.0, 0.6, 0.4, 1.0}, {1, 1, 1, 1}}, sloped), std::invalid_argument);
 }
+
+// A pressure scales with E, and E may be given in any unit: every norm of pressure_errors must
+// scale with the pressure, also where its square would overflow (1e300) or underflow (1e-160).
+TEST(PressureNorms, every_norm_scales_with_the_pressure_from_1e_minus300_to_1e300) {
+  const ContactInterface g = interface_of(7, 0.3);
+  const InterfaceCurve unit_h = interpolant(g, sloped);
+  const PressureErrors unit = pressure_errors(g, unit_h, sloped);
+  ASSERT_GT(unit.l2, 0.0);
+  for (double scale : {1e-300, 1e-160, 1e160, 1e300}) {
+    InterfaceCurve p_h = unit_h;
+    for (double& v : p_h.value) v *= scale;
+    const PressureErrors e = pressure_errors(g, p_h, [&](double x) { return scale * sloped(x); });
+    for (double PressureErrors::*member :
+         {&PressureErrors::l2, &PressureErrors::l2_interior, &PressureErrors::l2_ends, &PressureErrors::hminus,
+          &PressureErrors::best_l2, &PressureErrors::best_l2_interior, &PressureErrors::best_hminus,
+          &PressureErrors::norm_l2, &PressureErrors::norm_hminus})
+      // the same arithmetic up to rounding and the projection's solve: 1e-12 relative
+      EXPECT_NEAR(e.*member / scale, unit.*member, 1e-12 * unit.*member) << "scale " << scale;
+  }
+}

@@ -325,3 +325,19 @@ TEST(Programs, ch05_signorini_scene_converges_and_finds_the_contact_point) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/local_rates.csv"));
   }
 }
+
+// summary.json records every option with the value used: a flag given on the command line
+// must read true there (--no-compare once read false through a dangling reference).
+TEST(Programs, ch05_summary_records_the_no_compare_flag_as_given) {
+  const std::string dir = out_dir("ch05_no_compare");
+  const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::ifstream f(dir + "/summary.json");
+  std::stringstream s;
+  s << f.rdbuf();
+  const std::string json = s.str();
+  const auto options = json.substr(0, json.find('}'));  // the "options" block comes first
+  EXPECT_NE(options.find("\"no-compare\": true"), std::string::npos) << json;
+  EXPECT_NE(options.find("\"quick\": true"), std::string::npos) << json;
+  EXPECT_NE(options.find("\"no-plot\": true"), std::string::npos) << json;
+}
