@@ -5,12 +5,15 @@
 #include <cstdio>
 #include <limits>
 
+#include "common/memory_estimate.hpp"
 #include "common/stopwatch.hpp"
 
 namespace mortar {
 
 namespace {
-constexpr long long max_dofs = 12'000'000;  // beyond this the machine runs out of memory
+// A ceiling independent of the machine (it keeps node and dof indices far inside int);
+// memory_shortfall refuses earlier wherever less than about 36 GB is free.
+constexpr double max_dofs = 12'000'000;
 
 constexpr double max_cells_per_side = 1 << 16;
 
@@ -55,22 +58,26 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   parser.add_choice("pressure-ends", o.pressure_ends, {"sloped", "flat"},
                     "manufactured pressure: sloped (sigma_N' != 0 at x = L) or flat (sigma_N' = 0 at both ends)");
   parser.add_string("out", o.out, "output folder");
-  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
   if (o.quick) {
+    for (const char* name : {"n0", "levels"})
+      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
     o.n0 = 6;
     o.levels = 3;
   }
   const FinestSize size = finest_size(o);
-  if (size.largest() > max_cells_per_side || size.dofs() > static_cast<double>(max_dofs)) {
+  if (size.largest() > max_cells_per_side || size.dofs() > max_dofs) {
     char message[256];
     std::snprintf(message, sizeof message,
                   "the finest level would have %.3g dofs and up to %.3g cells along a side "
                   "(limits %.3g and %.3g; check also --L, --H1, --H2, --aspect)",
-                  size.dofs(), size.largest(), static_cast<double>(max_dofs), max_cells_per_side);
+                  size.dofs(), size.largest(), max_dofs, max_cells_per_side);
     parser.fail("levels", message);
   }
+  const std::string memory = memory_shortfall(size.dofs(), bytes_per_dof_single_solve, machine_memory());
+  if (!memory.empty()) parser.fail("levels", memory);
   prepare_output_folder(parser, o.out);
 }
 

@@ -216,15 +216,31 @@ std::string OptionParser::usage() const {
 void prepare_output_folder(const OptionParser& parser, const std::string& folder) {
   namespace fs = std::filesystem;
   std::error_code ec;
+  // The topmost folder this call creates: removed again if the folder turns out unusable, so
+  // that a refused --out leaves nothing behind.
+  fs::path first_new;
+  for (fs::path p = fs::absolute(folder, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    first_new = p;
+    if (p == p.parent_path()) break;
+  }
+  const auto refuse = [&](const std::string& message) {
+    if (!first_new.empty()) fs::remove_all(first_new, ec);
+    parser.fail("out", message);
+  };
   fs::create_directories(folder, ec);
-  if (ec) parser.fail("out", "cannot create folder '" + folder + "': " + ec.message());
-  if (!fs::is_directory(folder)) parser.fail("out", "'" + folder + "' is not a folder");
+  if (ec) refuse("cannot create folder '" + folder + "': " + ec.message());
+  if (!fs::is_directory(folder)) refuse("'" + folder + "' is not a folder");
   const fs::path probe = fs::path(folder) / ".write_probe";
   {
     std::ofstream f(probe);
-    if (!f) parser.fail("out", "folder '" + folder + "' is not writable");
+    if (!f) refuse("folder '" + folder + "' is not writable");
   }
   fs::remove(probe, ec);
+  // A previous run's results must not pass for this run's if this one fails before writing.
+  for (const char* name : {"convergence.csv", "summary.json"}) {
+    fs::remove(fs::path(folder) / name, ec);
+    if (fs::exists(fs::path(folder) / name)) refuse("cannot remove the previous run's " + std::string(name) + " in '" + folder + "'");
+  }
 }
 
 }  // namespace mortar

@@ -81,7 +81,9 @@ class OptionParser {
 bool parse_number(const std::string& text, double& value);
 
 // Creates the output folder of a program; a folder that cannot be created or written is a
-// bad --out value (exit 2), reported before any computation starts.
+// bad --out value (exit 2), reported before any computation starts, and the folders made on
+// the way are removed again. The previous run's convergence.csv and summary.json are removed,
+// so that a run that fails later does not leave them looking like its own.
 void prepare_output_folder(const OptionParser& parser, const std::string& folder);
 
 }  // namespace mortar

@@ -46,6 +46,26 @@ constexpr double singular_pivot_ratio = 1e-13;
 // CHOLMOD's supernodal LL^T, with access to the factor's diagonal for the pivot check.
 class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
  public:
+  // Eigen's compute() only compares L->minor with n, so an analysis or factorization that ran
+  // out of memory (L NULL, or L without numerical values) would pass as a success and crash on
+  // the first read of L->x. CHOLMOD reports such failures in cholmod_common::status: check it
+  // after each step and throw with the size and what failed.
+  void compute_checked(const SparseMatrix& K) {
+    cholmod().print = 0;  // the exception below says it; CHOLMOD's own line would repeat it
+    analyzePattern(K);
+    check_status("analysis", K.rows());
+    if (m_cholmodFactor == nullptr) fail("analysis", "no factor returned", K.rows());
+    factorize(K);
+    check_status("factorization", K.rows());
+    if (m_cholmodFactor->x == nullptr && m_cholmodFactor->minor == m_cholmodFactor->n)
+      fail("factorization", "no numerical values in the factor", K.rows());
+  }
+  // After a solve: the solve itself can run out of memory (Eigen then leaves x untouched).
+  void check_solve(Eigen::Index n) {
+    check_status("solve", n);
+    if (info() != Eigen::Success) fail("solve", "no solution returned", n);
+  }
+
   // Smallest L_kk^2 / K_pp over all pivots k (p = Perm[k]) and the unknown where it occurs.
   std::pair<double, Eigen::Index> worst_pivot(const Eigen::VectorXd& diagonal) const {
     const cholmod_factor* L = m_cholmodFactor;
@@ -54,6 +74,20 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
   }
 
  private:
+  void check_status(const char* step, Eigen::Index n) {
+    const int status = cholmod().status;
+    if (status == CHOLMOD_OUT_OF_MEMORY)
+      fail(step, "out of memory (CHOLMOD_OUT_OF_MEMORY; the machine or `ulimit -v` has not the "
+                 "memory this size needs: try fewer levels)", n);
+    if (status == CHOLMOD_TOO_LARGE) fail(step, "the problem is too large for CHOLMOD's integers", n);
+    if (status < 0)
+      fail(step, "CHOLMOD status " + std::to_string(status), n);
+  }
+  [[noreturn]] static void fail(const char* step, const std::string& what, Eigen::Index n) {
+    throw std::runtime_error("SpdSolver (CHOLMOD): " + std::string(step) + " of the " + std::to_string(n) +
+                             " x " + std::to_string(n) + " matrix failed: " + what);
+  }
+
   // Supernode s holds columns super[s] .. super[s+1]-1 of L as a dense column-major block of
   // pi[s+1] - pi[s] rows starting at x[px[s]]; its diagonal entries are at (j, j).
   template <typename Index>
@@ -123,7 +157,7 @@ void SpdSolver::factorize(const SparseMatrix& K) {
     }
   } else {
 #ifdef MORTAR_HAVE_CHOLMOD
-    impl_->cholmod.compute(K);
+    impl_->cholmod.compute_checked(K);
     if (impl_->cholmod.info() != Eigen::Success)
       throw std::runtime_error("SpdSolver (CHOLMOD): K is not positive definite (" +
                                std::to_string(K.rows()) +
@@ -143,8 +177,12 @@ Eigen::MatrixXd SpdSolver::solve_many(const Eigen::MatrixXd& rhs) const {
                                 " rows, K has " + std::to_string(impl_->size));
   Eigen::MatrixXd x;
 #ifdef MORTAR_HAVE_CHOLMOD
-  if (backend_ == SpdBackend::cholmod) x = impl_->cholmod.solve(rhs);
-  else x = impl_->ldlt.solve(rhs);
+  if (backend_ == SpdBackend::cholmod) {
+    x = impl_->cholmod.solve(rhs);
+    impl_->cholmod.check_solve(impl_->size);
+  } else {
+    x = impl_->ldlt.solve(rhs);
+  }
 #else
   x = impl_->ldlt.solve(rhs);
 #endif

@@ -1,6 +1,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "common/options.hpp"
 
 using namespace mortar;
@@ -92,4 +95,27 @@ TEST_F(OptionsDeathTest, help_lists_every_option_with_its_default_and_exits_0) {
   p.add_double("nu", d.nu, "ratio", Range::open(-1, 0.5));
   EXPECT_NE(p.usage().find("--nu VALUE"), std::string::npos);
   EXPECT_NE(p.usage().find("[default: 0.3]"), std::string::npos);
+}
+
+// A refused --out leaves no folder behind: here the last component is longer than a file
+// name may be, after two folders that do not exist yet.
+TEST_F(OptionsDeathTest, a_refused_out_folder_leaves_nothing_behind) {
+  const std::filesystem::path base = std::filesystem::temp_directory_path() / "options_refused_out";
+  std::filesystem::remove_all(base);
+  const std::string folder = (base / "a" / std::string(300, 'x')).string();
+  OptionParser p("demo", "a demo");
+  EXPECT_EXIT(prepare_output_folder(p, folder), ::testing::ExitedWithCode(2), ::testing::HasSubstr("--out: cannot create"));
+  EXPECT_FALSE(std::filesystem::exists(base));
+}
+
+TEST(Options, preparing_the_output_folder_removes_the_previous_results) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "options_stale_results";
+  std::filesystem::create_directories(folder);
+  for (const char* name : {"convergence.csv", "summary.json", "figure.png"}) std::ofstream(folder / name) << "old";
+  OptionParser p("demo", "a demo");
+  prepare_output_folder(p, folder.string());
+  EXPECT_FALSE(std::filesystem::exists(folder / "convergence.csv"));
+  EXPECT_FALSE(std::filesystem::exists(folder / "summary.json"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "figure.png"));  // only the files that claim a result
+  std::filesystem::remove_all(folder);
 }

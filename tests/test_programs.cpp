@@ -340,4 +340,43 @@ TEST(Programs, ch05_summary_records_the_no_compare_flag_as_given) {
   EXPECT_NE(options.find("\"no-compare\": true"), std::string::npos) << json;
   EXPECT_NE(options.find("\"quick\": true"), std::string::npos) << json;
   EXPECT_NE(options.find("\"no-plot\": true"), std::string::npos) << json;
+
+// A run the machine cannot hold is refused before any work, naming the memory it needs and
+// what the machine has. An address-space limit (`ulimit -v`) makes the test independent of
+// the machine; 1 GB holds neither chapter 4's 856k dofs (about 3 GB) nor the Hertz scene's
+// level 5 with its reference.
+TEST(Programs, a_run_larger_than_memory_is_refused_before_it_starts) {
+  const std::string dir = out_dir("memory_refused");
+  const std::vector<std::string> commands = {std::string(CH04) + " --levels 7", std::string(CH03) + " --levels 7",
+                                             std::string(CH05) + " --levels 5", std::string(CH02) + " --n0 8 --levels 9"};
+  for (const std::string& command : commands) {
+    const ProgramRun r = run("bash -c 'ulimit -v 1000000; exec " + command + " --no-plot --out " + dir + "'");
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find("--levels"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("GB of memory"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ulimit -v"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir)) << command << " left output behind";
+  }
+}
+
+// Under an address-space limit smaller than the libraries' own buffers, OpenBLAS retries a
+// failed mmap for ever inside the factorization: the run must be refused before it gets there.
+TEST(Programs, a_tiny_address_space_is_refused_not_a_hang) {
+  const std::string dir = out_dir("tiny_address_space");
+  const ProgramRun r = run("timeout 60 bash -c 'ulimit -v 300000; exec " + std::string(CH02) +
+                           " --quick --no-plot --out " + dir + "'");
+  EXPECT_EQ(r.status, 2) << "124 is the timeout: a hang\n" << r.output;
+  EXPECT_NE(r.output.find("GB of memory"), std::string::npos) << r.output;
+}
+
+// --quick sets --n0 and --levels: an explicit value beside it is refused, not silently replaced.
+TEST(Programs, quick_with_an_explicit_size_is_refused) {
+  for (const char* program : {CH02, CH03, CH04, CH05})
+    for (const std::string option : {"n0", "levels"}) {
+      const std::string dir = out_dir("quick_refused");
+      const ProgramRun r = run(std::string(program) + " --quick --" + option + " 4 --no-plot --out " + dir);
+      EXPECT_EQ(r.status, 2) << program << " --" << option << "\n" << r.output;
+      EXPECT_NE(r.output.find("--" + option + ": cannot be combined with --quick"), std::string::npos) << r.output;
+      EXPECT_FALSE(std::filesystem::exists(dir));
+    }
 }

@@ -1,4 +1,11 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
 
 #include "common/dirichlet.hpp"
 #include "common/spd_solver.hpp"
@@ -103,4 +110,48 @@ TEST(SpdSolver, a_stiffness_ratio_of_1e12_is_not_mistaken_for_singularity) {
     const Eigen::VectorXd x = solver.solve(rhs);
     EXPECT_LT((K * x - rhs).norm(), 1e-8 * rhs.norm()) << backend_name(b);
   }
+}
+
+namespace {
+double address_space_in_use() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  double kb = 0;
+  while (status >> key)
+    if (key == "VmSize:" && status >> kb) return kb * 1024;
+  return 0;
+}
+}  // namespace
+
+// CHOLMOD reports running out of memory only in cholmod_common::status; Eigen's info() does
+// not look there. In a child process with an address-space limit just above what it already
+// uses, the factorization of a 130k-dof K must end in a runtime_error saying "out of memory",
+// not in a crash on the missing factor, and within the alarm (no endless retry).
+TEST(SpdSolver, cholmod_out_of_memory_is_an_error_not_a_crash) {
+  if (!cholmod_available()) GTEST_SKIP() << "this build has no CHOLMOD";
+  const ReducedSystem small = clamped_block(20), large = clamped_block(256);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    alarm(60);
+    SpdSolver warm(SpdBackend::cholmod);
+    warm.factorize(small.K);  // maps OpenBLAS's buffers while memory is still there
+    SpdSolver solver(SpdBackend::cholmod);
+    const rlimit limit{static_cast<rlim_t>(address_space_in_use() + 40e6), RLIM_INFINITY};
+    setrlimit(RLIMIT_AS, &limit);
+    try {
+      solver.factorize(large.K);
+    } catch (const std::runtime_error& e) {
+      const bool says_so = std::string(e.what()).find("out of memory") != std::string::npos;
+      if (!says_so) std::fprintf(stderr, "%s\n", e.what());
+      _exit(says_so ? 0 : 3);
+    } catch (const std::bad_alloc&) {
+      _exit(4);
+    }
+    _exit(5);  // the factorization fitted: the limit was not tight enough
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child died of signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "3: another message, 4: std::bad_alloc, 5: no failure";
 }

@@ -9,12 +9,14 @@
 //   ch02_p1_triangles                         # 8 x 8 to 256 x 256 cells
 //   ch02_p1_triangles --n0 16 --levels 6      # up to 512 x 512, about 526k dofs
 //   ch02_p1_triangles --spd-solver simplicial_ldlt --jitter 0.3
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
 
 #include "common/convergence_study.hpp"
+#include "common/memory_estimate.hpp"
 #include "common/options.hpp"
 #include "common/vtu.hpp"
 #include "figures.hpp"
@@ -34,7 +36,9 @@ struct Options {
   bool no_plot = false;
 };
 
-constexpr int max_cells_per_side = 2048;  // 8.4M dofs: beyond that the machine runs out of time
+// 8.4M dofs: a ceiling on time; memory_shortfall (common/memory_estimate) refuses earlier on a
+// machine with less than about 26 GB
+constexpr int max_cells_per_side = 2048;
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
   using mortar::Range;
@@ -45,16 +49,23 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
   parser.add_choice("spd-solver", o.spd_solver, {"cholmod", "simplicial_ldlt"}, "sparse Cholesky");
   parser.add_string("out", o.out, "output folder");
-  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 4, levels = 4)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 4, levels = 4; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
   if (o.quick) {
+    for (const char* name : {"n0", "levels"})
+      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
     o.n0 = 4;
     o.levels = 4;
   }
-  if (static_cast<long long>(o.n0) << (o.levels - 1) > max_cells_per_side)
-    parser.fail("levels", "the finest level would have " + std::to_string(static_cast<long long>(o.n0) << (o.levels - 1)) +
+  // in floating point: n0 2^(levels-1) cannot wrap before it is compared
+  const double n = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  if (n > max_cells_per_side)
+    parser.fail("levels", "the finest level would have " + std::to_string(static_cast<long long>(n)) +
                               " cells per side, more than " + std::to_string(max_cells_per_side));
+  const std::string memory = mortar::memory_shortfall(2 * (n + 1) * (n + 1), mortar::bytes_per_dof_single_solve,
+                                                      mortar::machine_memory());
+  if (!memory.empty()) parser.fail("levels", memory);
   if (o.spd_solver == "cholmod" && !mortar::cholmod_available())
     parser.fail("spd-solver", "this build has no CHOLMOD (install libsuitesparse-dev and rebuild)");
   mortar::prepare_output_folder(parser, o.out);

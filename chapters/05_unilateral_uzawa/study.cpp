@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 
+#include "common/memory_estimate.hpp"
 #include "common/pressure_norms.hpp"
 #include "common/quadrature.hpp"
 
@@ -14,7 +16,9 @@
 namespace chapter05 {
 
 namespace {
-constexpr long long max_dofs = 8'000'000;
+// A ceiling independent of the machine (it keeps every index far inside int);
+// memory_shortfall refuses earlier wherever less than about 24 GB is free.
+constexpr double max_dofs = 8'000'000;
 
 double max_value(const mortar::InterfaceCurve& c) {
   return c.value.empty() ? 0.0 : *std::max_element(c.value.begin(), c.value.end());
@@ -80,10 +84,13 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", Range::closed(-1e6, 1e6));
   parser.add_flag("no-compare", o.no_compare, "skip the comparison of every solver on both matchings");
   parser.add_string("out", o.out, "output folder");
-  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
   o.compare = !o.no_compare;
+  if (o.quick)
+    for (const char* name : {"n0", "levels"})
+      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
   // the signorini scene measures local rates, which need more levels, each one cheaper
   if (o.scene == "signorini") {
     if (!parser.given("n0")) o.n0 = 8;
@@ -93,15 +100,29 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
     o.n0 = 8;
     o.levels = 3;
   }
-  const long long n1 = static_cast<long long>(o.n0) << (o.levels - 1);
-  const long long n2 = std::max(2LL, std::llround(n1 / o.h_ratio));
-  const long long dofs = 2 * (n1 + 1) * (std::llround(n1 * o.H1 / o.L) + 2) + 2 * (n2 + 1) * (std::llround(n2 * o.H2 / o.L) + 2);
-  // the partial scene solves two levels finer for its reference; the Hertz scene's graded
-  // reference has about as many dofs as the finest level (82,716 against 107,780 by default)
-  const long long reference_factor = o.scene == "partial" ? 16 : o.scene == "hertz" ? 2 : 1;
-  if (dofs * reference_factor > max_dofs)
-    parser.fail("levels", "the finest level would have about " + std::to_string(dofs * reference_factor) +
-                              " dofs, more than " + std::to_string(max_dofs));
+  // Sizes in floating point, so that no product can overflow before it is compared; the
+  // meshes are those of two_body_geometry with square cells.
+  const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  const double n2 = std::max(2.0, std::round(n1 / o.h_ratio));
+  const double m1 = std::max(1.0, std::round(n1 * o.H1 / o.L)), m2 = std::max(1.0, std::round(n2 * o.H2 / o.L));
+  const double dofs = 2 * (n1 + 1) * (m1 + 1) + 2 * (n2 + 1) * (m2 + 1);
+  // the partial scene solves two levels finer for its reference (16 times the dofs); the
+  // Hertz scene's graded reference has about as many dofs as the finest level (82,716 against
+  // 107,780 by default). Measured peaks (/usr/bin/time -v): Hertz 0.42 GB at 107,780 finest
+  // dofs (with the comparison of solvers) and 1.49 GB at about 428,000, i.e. 1.9 and 1.7 kB
+  // per counted dof; partial 5.71 GB at 107,780 (1.72M reference dofs), 3.3 kB per counted
+  // dof: the unilateral reference needs more than one Cholesky solve, hence 3.5 kB.
+  constexpr double bytes_per_counted_dof = 3500;
+  const double reference_factor = o.scene == "partial" ? 16 : o.scene == "hertz" ? 2 : 1;
+  if (dofs * reference_factor > max_dofs) {
+    char message[160];
+    std::snprintf(message, sizeof message, "the finest level would have about %.3g dofs (with its reference), more than %.3g",
+                  dofs * reference_factor, max_dofs);
+    parser.fail("levels", message);
+  }
+  const std::string memory = mortar::memory_shortfall(dofs * reference_factor, bytes_per_counted_dof,
+                                                      mortar::machine_memory());
+  if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
 }
 

@@ -1,0 +1,40 @@
+// The memory a run needs against the memory the machine has, checked before any work, so that
+// a run the machine cannot hold is refused at once instead of failing after minutes (or, under
+// an address-space limit, spinning inside OpenBLAS's allocator, which retries a failed mmap for
+// ever).
+#pragma once
+
+#include <string>
+
+namespace mortar {
+
+// Peak bytes per dof of a whole run (assembly, sparse Cholesky factor, errors, output),
+// measured with `/usr/bin/time -v` ("Maximum resident set size") on the finest level:
+//   ch02_p1_triangles   132,098 dofs 0.35 GB, 526,338 dofs 1.31 GB, 2,101,250 dofs 5.69 GB
+//                       (2.5-2.7 kB/dof; the factor's fill grows like n log n);
+//   ch04_integral_matching 214,916 dofs 0.50 GB, 855,812 dofs 1.99 GB (2.3 kB/dof).
+// 3 kB/dof covers both with a margin of about 10 %.
+constexpr double bytes_per_dof_single_solve = 3000;
+
+// What a run needs: a fixed part (libraries, thread stacks, and the 128 MB buffers OpenBLAS
+// maps per thread; a run of 8,450 dofs needed 330-360 MB of address space on 2 hardware
+// threads) plus bytes_per_dof for each dof of the finest level.
+double run_bytes(double dofs, double bytes_per_dof);
+
+// The memory a run may use: MemAvailable of /proc/meminfo and the soft RLIMIT_AS
+// (`ulimit -v`), each infinite when unknown or unlimited.
+struct MachineMemory {
+  double available_bytes;
+  double address_limit_bytes;
+  double usable() const;        // the smaller of the two
+  std::string describe() const;  // e.g. "23.9 GB available, address space limited to 0.5 GB"
+};
+MachineMemory machine_memory();
+// MemAvailable from the text of /proc/meminfo; infinite when the line is missing.
+double mem_available_bytes(const std::string& meminfo);
+
+// "" when a run of `dofs` finest-level dofs fits, else a sentence naming the dofs, the memory
+// they need and what the machine has (for OptionParser::fail).
+std::string memory_shortfall(double dofs, double bytes_per_dof, const MachineMemory& machine);
+
+}  // namespace mortar
