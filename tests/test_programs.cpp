@@ -325,3 +325,19 @@ TEST(Programs, ch05_signorini_scene_converges_and_finds_the_contact_point) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/local_rates.csv"));
   }
 }
+
+// A body 1e7 times stiffer than the other: the LU of the saddle point is as accurate as
+// elimination and must not be called singular.
+TEST(Programs, ch04_lu_on_a_stiffness_ratio_of_1e7_agrees_with_elimination) {
+  std::vector<std::string> dirs;
+  for (const std::string solver : {"lu", "elimination"}) {
+    dirs.push_back(out_dir("ch04_stiff_" + solver));
+    const ProgramRun r = run(std::string(CH04) + " --quick --no-plot --E1 1e7 --E2 1 --saddle-solver " + solver +
+                             " --out " + dirs.back());
+    ASSERT_EQ(r.status, 0) << solver << "\n" << r.output;
+  }
+  for (const char* key : {"err_energy", "err_pressure"}) {
+    const double lu = summary_value(dirs[0], "results", key), el = summary_value(dirs[1], "results", key);
+    EXPECT_NEAR(lu, el, 1e-6 * el) << key;
+  }
+}
