@@ -115,9 +115,15 @@ struct Scales {
   double d = 0, lambda = 0;
 };
 
+// The unit of the gap is the largest penetration of the unconstrained bodies, max_i b_i^+:
+// it comes from the data alone, so no iterate can inflate it, and the answer scales with it.
+// max_i |b_i| would not do: where the contact zone is small, the open gap far from it (of the
+// size of g) dwarfs the penetration (of the size of delta), and lambda = 0 passes at once.
+// Only when nothing penetrates (lambda = 0 is the answer) is max_i |b_i| the unit.
 Scales scales_of(const DualOperator& S, double S_norm) {
   Scales s;
-  s.d = S.b().cwiseAbs().maxCoeff();
+  s.d = S.b().cwiseMax(0.0).maxCoeff();
+  if (!(s.d > 0)) s.d = S.b().cwiseAbs().maxCoeff();
   s.lambda = S_norm > 0 ? s.d / S_norm : 0.0;
   return s;
 }

@@ -63,7 +63,8 @@ struct ContactSolution {
 
 // The complementarity residual, dimensionless:
 //   max_i | min(lambda_i / lambda_scale, d_i / d_scale) |,   d = G - B u (the remaining gap),
-// with d_scale = max_i |b_i| (the unconstrained response) and lambda_scale = d_scale / ||S||.
+// with d_scale = max_i b_i^+ (the largest penetration of the unconstrained bodies; max_i |b_i|
+// when nothing penetrates) and lambda_scale = d_scale / ||S||.
 // It is zero exactly when lambda >= 0, d >= 0 and lambda_i d_i = 0 for every i.
 double complementarity_residual(const Eigen::VectorXd& lambda, const Eigen::VectorXd& gap,
                                 double d_scale, double lambda_scale);
