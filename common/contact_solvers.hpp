@@ -59,6 +59,8 @@ struct ContactSolution {
   double S_norm = 0;       // the estimate of ||B K^{-1} B^T||
   double lambda_min = 0;   // plain Uzawa: lambda_min(S_AA) estimate behind the last step (0: none)
   bool step_fell_back = false;  // plain Uzawa: the dual energy rose and rho went back to 1 / ||S||
+  int cycled_at = 0;       // pdas: the iteration that met an active set again (0: none), after
+                           // which the dual active-set method finished the solve
 };
 
 // The complementarity residual, dimensionless:
