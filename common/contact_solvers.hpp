@@ -18,7 +18,10 @@
 //    With `accelerate`, Nesterov's momentum on the step 1 / ||S|| (FISTA on the dual).
 //  - pdas, the primal-dual active set method (a semi-smooth Newton method): guess the active
 //    set A = {i : lambda_i + c (b - S lambda)_i > 0}, solve S_AA lambda_A = b_A with
-//    lambda = 0 elsewhere, repeat until A stops changing.
+//    lambda = 0 elsewhere, repeat until A stops changing. S is no M-matrix, so A may come back
+//    to a set already tried (a stiff body on a soft one): at the first repeat a primal
+//    active-set method on the dual problem, which lowers the dual energy at every step and
+//    so cannot cycle, finishes the solve.
 // Both stop on the complementarity residual (below), never on the size of the last step.
 #pragma once
 
