@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -115,9 +116,15 @@ struct Scales {
   double d = 0, lambda = 0;
 };
 
+// The unit of the gap is the largest penetration of the unconstrained bodies, max_i b_i^+:
+// it comes from the data alone, so no iterate can inflate it, and the answer scales with it.
+// max_i |b_i| would not do: where the contact zone is small, the open gap far from it (of the
+// size of g) dwarfs the penetration (of the size of delta), and lambda = 0 passes at once.
+// Only when nothing penetrates (lambda = 0 is the answer) is max_i |b_i| the unit.
 Scales scales_of(const DualOperator& S, double S_norm) {
   Scales s;
-  s.d = S.b().cwiseAbs().maxCoeff();
+  s.d = S.b().cwiseMax(0.0).maxCoeff();
+  if (!(s.d > 0)) s.d = S.b().cwiseAbs().maxCoeff();
   s.lambda = S_norm > 0 ? s.d / S_norm : 0.0;
   return s;
 }
@@ -275,6 +282,80 @@ ContactSolution uzawa(DualOperator& S, const ContactSolverOptions& o, double S_n
                            format(sol.residual) + ")");
 }
 
+// lambda_A = S_AA^{-1} b_A on the rows A, zero elsewhere.
+Eigen::VectorXd solve_on(DualOperator& S, const std::vector<int>& rows) {
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(S.size());
+  if (rows.empty()) return lambda;
+  Eigen::VectorXd b_A(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) b_A[r] = S.b()[rows[r]];
+  const Eigen::VectorXd l_A = S.block(rows).ldlt().solve(b_A);
+  for (std::size_t r = 0; r < rows.size(); ++r) lambda[rows[r]] = l_A[r];
+  return lambda;
+}
+
+// The dual problem min theta(lambda) = 1/2 lambda.S lambda - b.lambda over lambda >= 0, by a
+// primal active-set method (Lawson and Hanson's, for a quadratic instead of least squares).
+// Every iterate is feasible and theta never rises, so no active set can come back: it ends
+// after finitely many steps where PDAS may cycle. It is slower (one row enters per step), so it
+// only takes over from PDAS. The free set P starts as the support of the feasible lambda given.
+// Step: add the row that penetrates most, minimize over P; where that minimizer leaves
+// lambda >= 0, go only as far as the first zero and drop that row from P.
+ContactSolution dual_active_set(DualOperator& S, const ContactSolverOptions& o, const Scales& sc,
+                                Eigen::VectorXd lambda, int iterations) {
+  ContactSolution sol;
+  const int m = S.size();
+  std::vector<bool> free(m, false);
+  for (int i = 0; i < m; ++i) free[i] = lambda[i] > 0;
+  std::vector<bool> refused(m, false);  // rows whose entry round-off undid at once
+  const int limit = iterations + std::min(o.max_iterations, 10 * m + 10);
+  for (sol.iterations = iterations + 1; sol.iterations <= limit; ++sol.iterations) {
+    // minimize over the free rows, staying feasible
+    for (;;) {
+      std::vector<int> P;
+      for (int i = 0; i < m; ++i)
+        if (free[i]) P.push_back(i);
+      const Eigen::VectorXd z = solve_on(S, P);
+      double alpha = 1;
+      for (int i : P)
+        if (z[i] <= 0) alpha = std::min(alpha, lambda[i] / (lambda[i] - z[i]));
+      lambda += alpha * (z - lambda);
+      if (alpha == 1) break;
+      // the rows that reached zero (the blocking one, up to round-off) leave P
+      const double zero = 1e-14 * lambda.cwiseAbs().maxCoeff();
+      for (int i : P)
+        if (lambda[i] <= zero) {
+          lambda[i] = 0;
+          free[i] = false;
+        }
+    }
+    lambda = lambda.cwiseMax(0.0);
+    const Eigen::VectorXd gap = S.apply(lambda) - S.b();
+    sol.residual = complementarity_residual(lambda, gap, sc.d, sc.lambda);
+    if (sol.residual <= o.tol) {
+      sol.lambda = lambda;
+      return sol;
+    }
+    int enter = -1;
+    for (int i = 0; i < m; ++i)
+      if (!free[i] && !refused[i] && gap[i] < 0 && (enter < 0 || gap[i] < gap[enter])) enter = i;
+    if (enter < 0) break;  // nothing left to add: the residual is round-off
+    free[enter] = true;
+    std::vector<int> P;
+    for (int i = 0; i < m; ++i)
+      if (free[i]) P.push_back(i);
+    // In exact arithmetic a penetrating row enters with a positive multiplier; where round-off
+    // says otherwise, it would leave at once: try the next one instead.
+    if (solve_on(S, P)[enter] <= 0) {
+      free[enter] = false;
+      refused[enter] = true;
+    } else {
+      std::fill(refused.begin(), refused.end(), false);
+    }
+  }
+  throw std::runtime_error("pdas: the dual active-set method stopped after " + std::to_string(sol.iterations) +
+                           " iterations at the residual " + format(sol.residual) + " > tol " + format(o.tol));
+}
+
 ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_norm) {
   ContactSolution sol;
   const int m = S.size();
@@ -284,22 +365,10 @@ ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_no
   std::vector<int> active;
   for (int i = 0; i < m; ++i)
     if (S.b()[i] > 0) active.push_back(i);  // where the unconstrained bodies would penetrate
+  std::set<std::vector<int>> visited{active};
   for (int k = 1; k <= std::min(o.max_iterations, 10 * m + 10); ++k) {
     // Newton step: the active rows hold with equality, the others carry no force.
-    const int a = static_cast<int>(active.size());
-    S.prefetch(active);
-    Eigen::MatrixXd S_AA(a, a);
-    Eigen::VectorXd b_A(a);
-    for (int c2 = 0; c2 < a; ++c2) {
-      const Eigen::VectorXd& col = S.column(active[c2]);
-      for (int r = 0; r < a; ++r) S_AA(r, c2) = col[active[r]];
-      b_A[c2] = S.b()[active[c2]];
-    }
-    lambda.setZero();
-    if (a > 0) {
-      const Eigen::VectorXd l_A = S_AA.ldlt().solve(b_A);
-      for (int r = 0; r < a; ++r) lambda[active[r]] = l_A[r];
-    }
+    lambda = solve_on(S, active);
     const Eigen::VectorXd gap = S.apply(lambda) - S.b();
     sol.iterations = k;
     sol.residual = complementarity_residual(lambda, gap, sc.d, sc.lambda);
@@ -313,6 +382,14 @@ ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_no
                                  " (dependent constraint rows?)");
       sol.lambda = lambda;
       return sol;
+    }
+    // S is not an M-matrix (a stiff body on a soft one makes that plain), so the update can
+    // return to an active set it has seen: it would cycle for ever. The dual active-set method
+    // cannot, and starts from this iterate made feasible.
+    if (!visited.insert(next).second) {
+      ContactSolution exact = dual_active_set(S, o, sc, lambda.cwiseMax(0.0), k);
+      exact.cycled_at = k;
+      return exact;
     }
     active = next;
   }

@@ -18,7 +18,10 @@
 //    With `accelerate`, Nesterov's momentum on the step 1 / ||S|| (FISTA on the dual).
 //  - pdas, the primal-dual active set method (a semi-smooth Newton method): guess the active
 //    set A = {i : lambda_i + c (b - S lambda)_i > 0}, solve S_AA lambda_A = b_A with
-//    lambda = 0 elsewhere, repeat until A stops changing.
+//    lambda = 0 elsewhere, repeat until A stops changing. S is no M-matrix, so A may come back
+//    to a set already tried (a stiff body on a soft one): at the first repeat a primal
+//    active-set method on the dual problem, which lowers the dual energy at every step and
+//    so cannot cycle, finishes the solve.
 // Both stop on the complementarity residual (below), never on the size of the last step.
 #pragma once
 
@@ -59,11 +62,14 @@ struct ContactSolution {
   double S_norm = 0;       // the estimate of ||B K^{-1} B^T||
   double lambda_min = 0;   // plain Uzawa: lambda_min(S_AA) estimate behind the last step (0: none)
   bool step_fell_back = false;  // plain Uzawa: the dual energy rose and rho went back to 1 / ||S||
+  int cycled_at = 0;       // pdas: the iteration that met an active set again (0: none), after
+                           // which the dual active-set method finished the solve
 };
 
 // The complementarity residual, dimensionless:
 //   max_i | min(lambda_i / lambda_scale, d_i / d_scale) |,   d = G - B u (the remaining gap),
-// with d_scale = max_i |b_i| (the unconstrained response) and lambda_scale = d_scale / ||S||.
+// with d_scale = max_i b_i^+ (the largest penetration of the unconstrained bodies; max_i |b_i|
+// when nothing penetrates) and lambda_scale = d_scale / ||S||.
 // It is zero exactly when lambda >= 0, d >= 0 and lambda_i d_i = 0 for every i.
 double complementarity_residual(const Eigen::VectorXd& lambda, const Eigen::VectorXd& gap,
                                 double d_scale, double lambda_scale);

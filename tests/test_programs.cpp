@@ -379,4 +379,34 @@ TEST(Programs, quick_with_an_explicit_size_is_refused) {
       EXPECT_NE(r.output.find("--" + option + ": cannot be combined with --quick"), std::string::npos) << r.output;
       EXPECT_FALSE(std::filesystem::exists(dir));
     }
+
+// A body 1e7 times stiffer than the other: the LU of the saddle point is as accurate as
+// elimination and must not be called singular.
+TEST(Programs, ch04_lu_on_a_stiffness_ratio_of_1e7_agrees_with_elimination) {
+  std::vector<std::string> dirs;
+  for (const std::string solver : {"lu", "elimination"}) {
+    dirs.push_back(out_dir("ch04_stiff_" + solver));
+    const ProgramRun r = run(std::string(CH04) + " --quick --no-plot --E1 1e7 --E2 1 --saddle-solver " + solver +
+                             " --out " + dirs.back());
+    ASSERT_EQ(r.status, 0) << solver << "\n" << r.output;
+  }
+  for (const char* key : {"err_energy", "err_pressure"}) {
+    const double lu = summary_value(dirs[0], "results", key), el = summary_value(dirs[1], "results", key);
+    EXPECT_NEAR(lu, el, 1e-6 * el) << key;
+  }
+}
+
+// A load of 1e-12 m: the penetration is tiny next to the open gap far from the contact, and
+// the stopping test must not accept the first Uzawa iterate for it.
+TEST(Programs, ch05_uzawa_and_pdas_agree_on_a_load_of_1e_12) {
+  std::vector<double> force;
+  for (const std::string solver : {"uzawa", "pdas"}) {
+    const std::string dir = out_dir("ch05_small_load_" + solver);
+    const ProgramRun r = run(std::string(CH05) + " --delta 1e-12 --matching pointwise --quick --no-compare --no-plot"
+                             " --solver " + solver + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << solver << "\n" << r.output;
+    force.push_back(summary_value(dir, "results", "total_force"));
+  }
+  EXPECT_GT(force[1], 0.0);
+  EXPECT_NEAR(force[0], force[1], 1e-6 * force[1]);
 }
