@@ -340,6 +340,7 @@ TEST(Programs, ch05_summary_records_the_no_compare_flag_as_given) {
   EXPECT_NE(options.find("\"no-compare\": true"), std::string::npos) << json;
   EXPECT_NE(options.find("\"quick\": true"), std::string::npos) << json;
   EXPECT_NE(options.find("\"no-plot\": true"), std::string::npos) << json;
+}
 
 // A run the machine cannot hold is refused before any work, naming the memory it needs and
 // what the machine has. An address-space limit (`ulimit -v`) makes the test independent of
@@ -379,6 +380,7 @@ TEST(Programs, quick_with_an_explicit_size_is_refused) {
       EXPECT_NE(r.output.find("--" + option + ": cannot be combined with --quick"), std::string::npos) << r.output;
       EXPECT_FALSE(std::filesystem::exists(dir));
     }
+}
 
 // A body 1e7 times stiffer than the other: the LU of the saddle point is as accurate as
 // elimination and must not be called singular.
