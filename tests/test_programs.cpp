@@ -412,3 +412,22 @@ TEST(Programs, ch05_uzawa_and_pdas_agree_on_a_load_of_1e_12) {
   EXPECT_GT(force[1], 0.0);
   EXPECT_NEAR(force[0], force[1], 1e-6 * force[1]);
 }
+
+// A contact zone narrower than one element (R = 1e-4: half-width about 1e-3, h1 = 1/32): no
+// multiplier becomes active, yet the top moved down by delta = 0.02 and the bodies overlap by
+// that much at x = L/2. The program must say so, never that the bodies do not touch.
+TEST(Programs, ch05_a_contact_zone_narrower_than_an_element_is_reported_as_penetration) {
+  const std::string dir = out_dir("ch05_tiny_zone");
+  const ProgramRun r = run(std::string(CH05) + " --R 1e-4 --quick --no-compare --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: the bodies interpenetrate"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("the bodies do not touch"), std::string::npos) << r.output;
+  EXPECT_NEAR(summary_value(dir, "results", "max_penetration_m"), 0.02, 1e-6);
+  EXPECT_NEAR(summary_value(dir, "results", "max_penetration_x_m"), 0.5, 1e-9);
+  // and where the bodies really do not touch (delta = 0), the pointwise gap agrees
+  const std::string open = out_dir("ch05_no_touch");
+  const ProgramRun g = run(std::string(CH05) + " --delta 0 --quick --no-compare --no-plot --out " + open);
+  ASSERT_EQ(g.status, 0) << g.output;
+  EXPECT_LE(summary_value(open, "results", "max_penetration_m"), 0.0);
+  EXPECT_NE(g.output.find("the bodies do not touch"), std::string::npos) << g.output;
+}

@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
         .set("iterations", f.solution.iterations)
         .set("columns", f.solution.columns)
         .set("complementarity_residual", f.solution.residual)
+        .set("max_penetration_m", f.max_penetration)
+        .set("max_penetration_x_m", f.max_penetration_x)
         .set("elements_in_contact", f.zone.active_elements)
         .set("reference", ref.kind);
     if (ref.kind == "hertz") chapter05::add_hertz_results(results, o, table, f, *ref.hertz);
@@ -77,6 +79,13 @@ int main(int argc, char** argv) {
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "
                 "residual %.2e\n", f.bodies.num_dofs(), f.zone.active_nodes, f.total_force,
                 f.solution.iterations, f.solution.residual);
+    if (f.max_penetration > 0 && f.zone.active_elements == 0)
+      std::printf("warning: the bodies interpenetrate by up to %.3g m at x = %.4g m, yet %s: the zone "
+                  "where they should touch is narrower than an element (h1 = %.3g m), and the constraints "
+                  "(averages against psi_i, or values at the nodes of xi^1) do not see it; refine "
+                  "(--n0, --levels) until it spans several elements\n",
+                  f.max_penetration, f.max_penetration_x,
+                  f.zone.empty ? "no multiplier is active" : "no element has both ends in contact", f.h1);
     if (ref.kind == "hertz") chapter05::print_hertz_errors(o, table, f, *ref.hertz);
     if (ref.kind == "exact") table.print_local_rates();
     if (o.scene == "signorini")

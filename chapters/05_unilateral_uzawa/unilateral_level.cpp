@@ -1,10 +1,30 @@
 #include "unilateral_level.hpp"
 
+#include <limits>
+
 #include "common/bilateral_contact.hpp"
 #include "common/dirichlet.hpp"
 #include "common/stopwatch.hpp"
 
 namespace chapter05 {
+
+namespace {
+// [u_h.n] is P1 on the merged grid; g is not: check its breakpoints and the midpoints between.
+void measure_penetration(UnilateralLevel& r) {
+  const mortar::InterfaceCurve& j = r.jump;
+  r.max_penetration = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < j.x.size(); ++k)
+    for (double t : {0.0, 0.5}) {
+      if (t > 0 && k + 1 == j.x.size()) break;
+      const double x = t > 0 ? 0.5 * (j.x[k] + j.x[k + 1]) : j.x[k];
+      const double value = t > 0 ? 0.5 * (j.value[k] + j.value[k + 1]) : j.value[k];
+      if (value - r.gap(x) > r.max_penetration) {
+        r.max_penetration = value - r.gap(x);
+        r.max_penetration_x = x;
+      }
+    }
+}
+}  // namespace
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
                                        const mortar::ManufacturedContact& exact) {
@@ -35,6 +55,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
   r.pressure = mortar::contact_pressure(r.gamma, r.constraints, r.solution.lambda);
   r.jump = mortar::normal_jump(r.bodies, r.gamma, r.u);
   r.zone = mortar::contact_zone(r.pressure);
+  measure_penetration(r);
   r.total_force = mortar::total_contact_force(r.gamma, r.constraints, r.solution.lambda);
   const bool body1 = r.gamma.nonmortar == 0;
   r.h1 = (body1 ? r.gamma.nonmortar_trace : r.gamma.mortar_trace).max_element_length();

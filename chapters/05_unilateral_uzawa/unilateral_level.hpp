@@ -31,6 +31,10 @@ struct UnilateralLevel {
   double total_force = 0;
   double time_s = 0, limit_s = 0;
   double h1 = 0, h2 = 0;
+  // The largest pointwise violation of (9), max ([u_h.n] - g) over Gamma_c, and where: the
+  // integral constraints of K_h^I only bound averages of it, so it can stay positive, by
+  // O(h^2) where the gap is smooth, by much more where the zone is narrower than an element.
+  double max_penetration = 0, max_penetration_x = 0;
 };
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
