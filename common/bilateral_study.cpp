@@ -67,6 +67,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
     o.n0 = 6;
     o.levels = 3;
   }
+  check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
   const FinestSize size = finest_size(o);
   if (size.largest() > max_cells_per_side || size.dofs() > max_dofs) {
     char message[256];
@@ -84,6 +85,36 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
 ManufacturedContact manufactured_solution(const BilateralStudyOptions& o) {
   const Material m1(o.E1, o.nu1), m2(o.E2, o.nu2);
   return ManufacturedContact(m1, m2, o.pressure_ends == "flat" ? flat_ends_profile(o.L) : sloped_profile(o.L));
+}
+
+void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect) {
+  const double n2_coarsest = std::round(n0 / o.h_ratio);
+  if (n2_coarsest < 2) {
+    char message[200];
+    std::snprintf(message, sizeof message,
+                  "body 2 would have %.0f elements along Gamma_c on the coarsest level (n0 / h-ratio = %.3g); "
+                  "it needs at least 2 to be refined with body 1: raise --n0 or lower --h-ratio",
+                  n2_coarsest, n0 / o.h_ratio);
+    parser.fail("h-ratio", message);
+  }
+  // the cells' width / height: (L / n) / (H / m), m as two_body_geometry rounds it; 10% above
+  // the --aspect limit of 20 leaves room for that rounding
+  constexpr double limit = 22;
+  for (const double n1 : {static_cast<double>(n0), std::ldexp(static_cast<double>(n0), levels - 1)})
+    for (int l = 0; l < 2; ++l) {
+      const double n = l == 0 ? n1 : std::max(2.0, std::round(n1 / o.h_ratio));
+      const double H = l == 0 ? o.H1 : o.H2;
+      const double m = std::max(1.0, std::round(aspect * n * H / o.L));
+      const double shape = (o.L / n) / (H / m);
+      if (shape > limit || shape < 1 / limit) {
+        char message[240];
+        std::snprintf(message, sizeof message,
+                      "the cells of body %d would be %.3g:1 (width L / %.0f = %.3g m, height H%d / %.0f = %.3g m); "
+                      "beyond 20:1 either way the solves degrade: check --L, --H1, --H2 and --aspect",
+                      l + 1, shape >= 1 ? shape : 1 / shape, n, o.L / n, l + 1, m, H / m);
+        parser.fail("L", message);
+      }
+    }
 }
 
 TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect) {

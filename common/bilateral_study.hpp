@@ -45,6 +45,13 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
 // (sigma_N' = 0 at both ends, so the interior rate shows).
 ManufacturedContact manufactured_solution(const BilateralStudyOptions& o);
 
+// Refuses (status 2, naming the option) meshes that the options would make degenerate at
+// the coarsest (n1 = n0) or finest level: body 2 with fewer than 2 elements before its
+// max(2, .) floor, which then stays unrefined and makes rates meaningless; cells longer than
+// 20:1 either way, whether from --aspect or from --L against --H1/--H2 (beyond it the solves
+// stop converging and say nothing).
+void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect);
+
 // Meshes with n1 body-1 elements along Gamma_c: n2 = max(2, round(n1 / h_ratio)), m_l rows
 // with cells of width / height = aspect. Chapters 3-5 all build their levels this way.
 TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect);

@@ -112,8 +112,10 @@ TEST(Programs, ch03_and_ch04_refuse_malformed_input) {
       {"--nu2 1", "nu2"}, {"--h-ratio 0", "h-ratio"}, {"--h-ratio -3/2", "h-ratio"},
       {"--h-ratio inf", "h-ratio"}, {"--nonmortar 3", "nonmortar"}, {"--nonmortar 0", "nonmortar"},
       {"--n0 4096 --levels 6", "levels"}, {"--saddle-solver cg", "saddle-solver"}, {"--aspect 0", "aspect"},
-      {"--H1 -1", "H1"}, {"--L 1e-6 --H1 536.870912 --H2 858.9934592 --n0 2", "levels"},
-      {"--pressure-ends steep", "pressure-ends"}, {"--pressure-ends", "pressure-ends"}};
+      {"--H1 -1", "H1"}, {"--L 1e-6 --H1 536.870912 --H2 858.9934592 --n0 4", "levels"},
+      {"--pressure-ends steep", "pressure-ends"}, {"--pressure-ends", "pressure-ends"},
+      // degenerate meshes: 1e5:1 cells through --L, body 2 held at its floor of 2 elements
+      {"--L 1e6", "L"}, {"--H2 1e-4", "L"}, {"--h-ratio 100", "h-ratio"}, {"--n0 2 --h-ratio 3/2", "h-ratio"}};
   expect_all_refused(CH03, common_bad_inputs(), own);
   expect_all_refused(CH04, common_bad_inputs(), own);
 }
@@ -124,7 +126,11 @@ TEST(Programs, ch05_refuses_malformed_input) {
                       {"--acceleration heavy", "acceleration"}, {"--rho -1", "rho"}, {"--rho nan", "rho"},
                       {"--tol 0", "tol"}, {"--tol 1", "tol"}, {"--R 0", "R"}, {"--delta nan", "delta"},
                       {"--delta inf", "delta"}, {"--E1 -2", "E1"}, {"--nu2 0.5", "nu2"}, {"--h-ratio 0", "h-ratio"},
-                      {"--n0 4096 --levels 8", "levels"}});
+                      {"--n0 4096 --levels 8", "levels"},
+                      // degenerate scenes: an imposed displacement beyond the body's height, cells of
+                      // 1e5:1, body 2 unrefined, E where B K^-1 B^T leaves the range of double
+                      {"--delta 1.5", "delta"}, {"--delta -1", "delta"}, {"--L 1e6", "L"},
+                      {"--h-ratio 50", "h-ratio"}, {"--E1 1e-160", "E1"}, {"--E2 1e300", "E2"}});
 }
 
 TEST(Programs, ch01_mortar_conserves_the_integral_and_pointwise_does_not) {

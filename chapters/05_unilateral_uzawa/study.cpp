@@ -100,6 +100,17 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
     o.n0 = 8;
     o.levels = 3;
   }
+  mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
+  // small displacements: the imposed one must be small against the body it compresses
+  if (std::fabs(o.delta) >= o.H1)
+    parser.fail("delta", "|delta| = " + std::to_string(std::fabs(o.delta)) + " m is not small against the height of "
+                "body 1, H1 = " + std::to_string(o.H1) + " m: linear elasticity needs |delta| < H1");
+  // S = B K^-1 B^T scales like 1/E; beyond these bounds its squares leave the range of double
+  // (the answer does not depend on the unit of E: choose one that brings E near 1)
+  for (const auto& [name, E] : {std::pair<const char*, double>{"E1", o.E1}, {"E2", o.E2}})
+    if (E < 1e-100 || E > 1e100)
+      parser.fail(name, "the contact solvers work on B K^-1 B^T, which scales like 1/E: E must lie in "
+                        "[1e-100, 1e100] Pa (the displacements do not depend on the unit of E; change it)");
   // Sizes in floating point, so that no product can overflow before it is compared; the
   // meshes are those of two_body_geometry with square cells.
   const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
