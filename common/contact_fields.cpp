@@ -102,12 +102,6 @@ double ContactZone::half_width() const {
   return 0.5 * (0.5 * (right_active + right_inactive) - 0.5 * (left_active + left_inactive));
 }
 
-bool ContactZone::brackets(double centre, double a) const {
-  if (empty) return a == 0.0;
-  return centre - a <= left_active && centre - a >= left_inactive &&
-         centre + a >= right_active && centre + a <= right_inactive;
-}
-
 ContactZone contact_zone(const InterfaceCurve& p) {
   ContactZone z;
   const int n = static_cast<int>(p.x.size());

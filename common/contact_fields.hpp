@@ -48,8 +48,6 @@ struct ContactZone {
   int active_nodes = 0;
   int active_elements = 0;  // elements of the trace with p > 0 at both ends
   double half_width() const;  // 0 when empty
-  // Does the zone [centre - a, centre + a] have its edges between active and inactive nodes?
-  bool brackets(double centre, double a) const;
 };
 ContactZone contact_zone(const InterfaceCurve& pressure);
 

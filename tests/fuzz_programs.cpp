@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "program_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -28,10 +30,6 @@ constexpr int lists_per_program = 200;
 constexpr unsigned seed = 20240601;
 constexpr int seconds_per_run = 60;  // a run is well under a second; this catches a hang
 
-struct ProgramRun {
-  int status = -1;  // exit status; -1 when ended by a signal
-  std::string output;
-};
 
 std::string quoted(const std::string& s) {
   std::string q = "'";
@@ -42,14 +40,7 @@ std::string quoted(const std::string& s) {
 ProgramRun run(const std::string& program, const std::vector<std::string>& args) {
   std::string command = "timeout " + std::to_string(seconds_per_run) + " " + program;
   for (const std::string& a : args) command += " " + quoted(a);
-  ProgramRun r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buf[4096];
-  while (fgets(buf, sizeof buf, pipe) != nullptr) r.output += buf;
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
+  return run_command(command);
 }
 
 // One option as `--help` shows it: "  --name VALUE  text (a|b|c) [default: x]".

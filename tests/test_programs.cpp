@@ -13,23 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "program_run.hpp"
+
 namespace {
 
-struct ProgramRun {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
-
-ProgramRun run(const std::string& command) {
-  ProgramRun r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buf[4096];
-  while (fgets(buf, sizeof buf, pipe) != nullptr) r.output += buf;
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
-}
+ProgramRun run(const std::string& command) { return run_command(command); }
 
 std::string out_dir(const std::string& name) {
   const std::string dir = std::string(WORK_DIR) + "/" + name;
