@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "common/bilateral_study.hpp"
+#include "common/study/bilateral_study.hpp"
 
 using namespace mortar;
 

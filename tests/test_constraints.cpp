@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/constraints.hpp"
+#include "common/contact/constraints.hpp"
 
 using namespace mortar;
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "common/contact_fields.hpp"
+#include "common/contact/contact_fields.hpp"
 
 using namespace mortar;
 

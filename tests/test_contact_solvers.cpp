@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "common/bilateral_contact.hpp"
-#include "common/contact_fields.hpp"
-#include "common/contact_solvers.hpp"
+#include "common/contact/bilateral_contact.hpp"
+#include "common/contact/contact_fields.hpp"
+#include "common/contact/contact_solvers.hpp"
 
 using namespace mortar;
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/convergence_study.hpp"
+#include "common/study/convergence_study.hpp"
 
 using namespace mortar;
 

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "common/dirichlet.hpp"
-#include "common/spd_solver.hpp"
+#include "common/fem/dirichlet.hpp"
+#include "common/linalg/spd_solver.hpp"
 
 using namespace mortar;
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "common/errors.hpp"
+#include "common/fem/errors.hpp"
 
 using namespace mortar;
 

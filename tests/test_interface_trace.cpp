@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/interface_trace.hpp"
+#include "common/interface/interface_trace.hpp"
 
 using namespace mortar;
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "common/manufactured_contact.hpp"
+#include "common/contact/manufactured_contact.hpp"
 
 using namespace mortar;
 

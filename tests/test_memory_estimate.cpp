@@ -1,5 +1,5 @@
 // The memory estimate: what a run needs, what the machine has, and the refusal between them.
-#include "common/memory_estimate.hpp"
+#include "common/linalg/memory_estimate.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/merged_grid.hpp"
+#include "common/interface/merged_grid.hpp"
 
 using namespace mortar;
 

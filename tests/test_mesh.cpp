@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/mesh.hpp"
+#include "common/fem/mesh.hpp"
 
 using namespace mortar;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/multiplier_space.hpp"
+#include "common/interface/multiplier_space.hpp"
 
 using namespace mortar;
 

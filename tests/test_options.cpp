@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "common/options.hpp"
+#include "common/study/options.hpp"
 
 using namespace mortar;
 

@@ -4,9 +4,9 @@
 #include <random>
 #include <vector>
 
-#include "common/convergence_study.hpp"
-#include "common/pressure_norms.hpp"
-#include "common/quadrature.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/interface/pressure_norms.hpp"
+#include "common/fem/quadrature.hpp"
 
 using namespace mortar;
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "common/quadrature.hpp"
+#include "common/fem/quadrature.hpp"
 
 using namespace mortar;
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "common/dirichlet.hpp"
-#include "common/spd_solver.hpp"
+#include "common/fem/dirichlet.hpp"
+#include "common/linalg/spd_solver.hpp"
 
 using namespace mortar;
 

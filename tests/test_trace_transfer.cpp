@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "common/trace_transfer.hpp"
+#include "common/interface/trace_transfer.hpp"
 
 using namespace mortar;
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/two_bodies.hpp"
+#include "common/contact/two_bodies.hpp"
 
 using namespace mortar;
 

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "common/merged_grid.hpp"
-#include "common/plot.hpp"
-#include "common/trace_transfer.hpp"
+#include "common/interface/merged_grid.hpp"
+#include "common/study/plot.hpp"
+#include "common/interface/trace_transfer.hpp"
 
 namespace chapter01 {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "common/convergence_study.hpp"
+#include "common/study/convergence_study.hpp"
 #include "transfer_case.hpp"
 
 namespace chapter01 {

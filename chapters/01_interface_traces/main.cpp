@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "common/convergence_study.hpp"
-#include "common/options.hpp"
-#include "common/trace_transfer.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/study/options.hpp"
+#include "common/interface/trace_transfer.hpp"
 #include "figures.hpp"
 #include "trace_functions.hpp"
 #include "transfer_case.hpp"

@@ -7,13 +7,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/merged_grid.hpp"
-#include "common/mortar_matrices.hpp"
-#include "common/multiplier_space.hpp"
-#include "common/quadrature.hpp"
-#include "common/spd_solver.hpp"
-#include "common/stopwatch.hpp"
-#include "common/trace_transfer.hpp"
+#include "common/interface/merged_grid.hpp"
+#include "common/interface/mortar_matrices.hpp"
+#include "common/interface/multiplier_space.hpp"
+#include "common/fem/quadrature.hpp"
+#include "common/linalg/spd_solver.hpp"
+#include "common/study/stopwatch.hpp"
+#include "common/interface/trace_transfer.hpp"
 
 namespace chapter01 {
 

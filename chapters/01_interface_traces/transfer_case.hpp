@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "common/interface_trace.hpp"
+#include "common/interface/interface_trace.hpp"
 #include "trace_functions.hpp"
 
 namespace chapter01 {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <vector>
 
-#include "common/merged_grid.hpp"
-#include "common/mortar_matrices.hpp"
-#include "common/trace_transfer.hpp"
+#include "common/interface/merged_grid.hpp"
+#include "common/interface/mortar_matrices.hpp"
+#include "common/interface/trace_transfer.hpp"
 
 namespace chapter01 {
 

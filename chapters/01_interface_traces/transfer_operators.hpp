@@ -11,8 +11,8 @@
 
 #include <Eigen/Dense>
 
-#include "common/interface_trace.hpp"
-#include "common/multiplier_space.hpp"
+#include "common/interface/interface_trace.hpp"
+#include "common/interface/multiplier_space.hpp"
 
 namespace chapter01 {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "common/plot.hpp"
+#include "common/study/plot.hpp"
 
 namespace chapter02 {
 

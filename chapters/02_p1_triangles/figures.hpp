@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "common/convergence_study.hpp"
-#include "common/mesh.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/fem/mesh.hpp"
 
 namespace chapter02 {
 

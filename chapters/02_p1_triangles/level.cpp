@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "common/dirichlet.hpp"
-#include "common/physical_limit.hpp"
-#include "common/stopwatch.hpp"
+#include "common/fem/dirichlet.hpp"
+#include "common/linalg/physical_limit.hpp"
+#include "common/study/stopwatch.hpp"
 
 namespace chapter02 {
 

@@ -3,9 +3,9 @@
 
 #include <Eigen/Dense>
 
-#include "common/errors.hpp"
-#include "common/mesh.hpp"
-#include "common/spd_solver.hpp"
+#include "common/fem/errors.hpp"
+#include "common/fem/mesh.hpp"
+#include "common/linalg/spd_solver.hpp"
 #include "manufactured_solution.hpp"
 
 namespace chapter02 {

@@ -15,10 +15,10 @@
 #include <filesystem>
 #include <string>
 
-#include "common/convergence_study.hpp"
-#include "common/memory_estimate.hpp"
-#include "common/options.hpp"
-#include "common/vtu.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/linalg/memory_estimate.hpp"
+#include "common/study/options.hpp"
+#include "common/study/vtu.hpp"
 #include "figures.hpp"
 #include "level.hpp"
 

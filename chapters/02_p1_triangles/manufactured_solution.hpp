@@ -7,8 +7,8 @@
 
 #include <Eigen/Dense>
 
-#include "common/errors.hpp"
-#include "common/p1_elasticity.hpp"
+#include "common/fem/errors.hpp"
+#include "common/fem/p1_elasticity.hpp"
 
 namespace chapter02 {
 

@@ -15,8 +15,8 @@
 #include <cstdio>
 #include <exception>
 
-#include "common/bilateral_study.hpp"
-#include "common/contact_plots.hpp"
+#include "common/study/bilateral_study.hpp"
+#include "common/study/contact_plots.hpp"
 
 int main(int argc, char** argv) {
   // 1. Options, checked before any work starts.

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "common/plot.hpp"
+#include "common/study/plot.hpp"
 #include "hertz_reference.hpp"
 
 namespace chapter05 {

@@ -5,8 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "common/mesh.hpp"
-#include "common/stopwatch.hpp"
+#include "common/fem/mesh.hpp"
+#include "common/study/stopwatch.hpp"
 #include "hertz.hpp"
 #include "peak_pressure.hpp"
 

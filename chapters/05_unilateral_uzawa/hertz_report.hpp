@@ -4,7 +4,7 @@
 // own estimated error; in summary.json and on the console.
 #pragma once
 
-#include "common/json_writer.hpp"
+#include "common/study/json_writer.hpp"
 #include "hertz_reference.hpp"
 
 namespace chapter05 {

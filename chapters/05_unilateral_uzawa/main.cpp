@@ -3,7 +3,7 @@
 // The bodies may now separate (paper, section 5): [u.n] <= g, lambda >= 0, lambda [u.n - g] = 0
 // on Gamma_c, tested pointwise (K_h^P) or against the nonnegative basis of M_h^1 (K_h^I):
 // B u <= G, one row per node or per multiplier. K is factorized once; the solvers work on the
-// multipliers through S = B K^{-1} B^T (common/contact_solvers.hpp).
+// multipliers through S = B K^{-1} B^T (common/contact/contact_solvers.hpp).
 //
 //   ch05_unilateral_uzawa                                   # Hertz, integral matching, pdas
 //   ch05_unilateral_uzawa --solver uzawa --acceleration none
@@ -13,7 +13,7 @@
 #include <exception>
 #include <memory>
 
-#include "common/contact_plots.hpp"
+#include "common/study/contact_plots.hpp"
 #include "figures.hpp"
 #include "hertz_report.hpp"
 #include "study.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "common/quadrature.hpp"
+#include "common/fem/quadrature.hpp"
 
 namespace chapter05 {
 

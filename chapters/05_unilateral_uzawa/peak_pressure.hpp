@@ -8,7 +8,7 @@
 // divide by that factor (computed, not typed in), so that an exact ellipse returns its p0.
 #pragma once
 
-#include "common/contact_fields.hpp"
+#include "common/contact/contact_fields.hpp"
 
 namespace chapter05 {
 

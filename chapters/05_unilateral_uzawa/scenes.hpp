@@ -6,7 +6,7 @@
 //    bodies touch on the left part only and separate on the right;
 //  - bilateral: chapter 4's exact solution, g = 0; the exact pressure is positive everywhere,
 //    so the unilateral answer must be the bilateral one;
-//  - signorini: an exact unilateral solution (common/manufactured_contact.hpp): contact on
+//  - signorini: an exact unilateral solution (common/contact/manufactured_contact.hpp): contact on
 //    (0, x*), separation on (x*, L), x* = L (1/2 + sqrt(2)/10) never a node; u prescribed on
 //    every outer side, g = A (x - x*)_+^2 / L. Theorem 5.1 is measured on it.
 #pragma once
@@ -14,8 +14,8 @@
 #include <functional>
 #include <string>
 
-#include "common/contact_scenes.hpp"
-#include "common/manufactured_contact.hpp"
+#include "common/contact/contact_scenes.hpp"
+#include "common/contact/manufactured_contact.hpp"
 
 namespace chapter05 {
 

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <limits>
 
-#include "common/memory_estimate.hpp"
-#include "common/pressure_norms.hpp"
-#include "common/quadrature.hpp"
+#include "common/linalg/memory_estimate.hpp"
+#include "common/interface/pressure_norms.hpp"
+#include "common/fem/quadrature.hpp"
 
 #include "hertz_reference.hpp"
 #include "peak_pressure.hpp"
@@ -221,7 +221,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
       norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(r.u, l), exact.exact(l));
     const auto p = [&](double x) { return exact.pressure(x); };
     const auto c = [&](double x) { return exact.normal_displacement(x); };
-    // the multiplier in its own norms (common/pressure_norms.hpp): L2, the mesh-dependent
+    // the multiplier in its own norms (common/interface/pressure_norms.hpp): L2, the mesh-dependent
     // H^{-1/2} norm, and the L2 best approximation in M_h^1 beside them
     const mortar::PressureErrors pe = mortar::pressure_errors(r.gamma, r.pressure, p);
     row.push_back({"err_energy", norms.relative_energy()});

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "common/bilateral_study.hpp"
-#include "common/convergence_study.hpp"
-#include "common/options.hpp"
+#include "common/study/bilateral_study.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/study/options.hpp"
 #include "hertz.hpp"
 #include "unilateral_level.hpp"
 

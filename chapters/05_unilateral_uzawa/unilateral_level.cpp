@@ -2,9 +2,9 @@
 
 #include <limits>
 
-#include "common/bilateral_contact.hpp"
-#include "common/dirichlet.hpp"
-#include "common/stopwatch.hpp"
+#include "common/contact/bilateral_contact.hpp"
+#include "common/fem/dirichlet.hpp"
+#include "common/study/stopwatch.hpp"
 
 namespace chapter05 {
 

@@ -2,10 +2,10 @@
 // elimination, one contact solve, and what it says on Gamma_c.
 #pragma once
 
-#include "common/constraints.hpp"
-#include "common/contact_fields.hpp"
-#include "common/contact_solvers.hpp"
-#include "common/errors.hpp"
+#include "common/contact/constraints.hpp"
+#include "common/contact/contact_fields.hpp"
+#include "common/contact/contact_solvers.hpp"
+#include "common/fem/errors.hpp"
 #include "scenes.hpp"
 
 namespace chapter05 {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/mortar_matrices.hpp"
+#include "common/interface/mortar_matrices.hpp"
 #include "exercise.hpp"
 
 TEST(MortarMatrixM, C_times_P_is_the_library_M) {

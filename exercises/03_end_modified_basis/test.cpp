@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "common/multiplier_space.hpp"
-#include "common/trace_transfer.hpp"
+#include "common/interface/multiplier_space.hpp"
+#include "common/interface/trace_transfer.hpp"
 #include "exercise.hpp"
 
 TEST(EndModifiedBasis, equals_the_library_basis) {

@@ -2,7 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "common/p1_elasticity.hpp"
+#include "common/fem/p1_elasticity.hpp"
 #include "exercise.hpp"
 
 namespace {

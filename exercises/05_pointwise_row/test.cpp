@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/constraints.hpp"
+#include "common/contact/constraints.hpp"
 #include "exercise.hpp"
 
 TEST(PointwiseRow, equals_the_library_rows) {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "common/bilateral_contact.hpp"
+#include "common/contact/bilateral_contact.hpp"
 #include "exercise.hpp"
 
 namespace {

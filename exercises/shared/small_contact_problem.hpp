@@ -5,7 +5,7 @@
 
 #include <Eigen/Dense>
 
-#include "common/contact_solvers.hpp"
+#include "common/contact/contact_solvers.hpp"
 
 namespace exercise_support {
 

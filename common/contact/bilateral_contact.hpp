@@ -1,0 +1,33 @@
+// One bilateral contact solve (chapters 3 and 4): Gamma_c, the constraint rows of the chosen
+// matching, Dirichlet elimination, the saddle-point solve, timed as one piece.
+#pragma once
+
+#include "common/contact/constraints.hpp"
+#include "common/contact/contact_scenes.hpp"
+#include "common/contact/saddle_point.hpp"
+
+namespace mortar {
+
+struct BilateralOptions {
+  Matching matching = Matching::integral;
+  int nonmortar = 0;  // body index of the non-mortar side
+  SaddleSolver solver = SaddleSolver::elimination;
+  SpdBackend backend = fastest_spd_backend();
+};
+
+struct BilateralSolution {
+  ContactInterface gamma;
+  Constraints constraints;
+  Eigen::VectorXd u;       // both bodies, full (prescribed dofs included)
+  Eigen::VectorXd lambda;  // one multiplier per kept constraint row
+  double time_s = 0;       // assembly of K and B, Dirichlet elimination, solve
+};
+
+BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scene,
+                                  const BilateralOptions& options);
+
+// The physical limit of a two-body level (DESIGN.md): assemble K of both bodies, eliminate the
+// Dirichlet dofs, one Cholesky factorization and one solve; the scene must hold each body.
+double two_body_limit(const TwoBodies& bodies, const SceneData& scene);
+
+}  // namespace mortar

@@ -1,0 +1,132 @@
+#include "common/contact/constraints.hpp"
+
+#include <stdexcept>
+
+#include "common/fem/quadrature.hpp"
+
+namespace mortar {
+
+Matching parse_matching(const std::string& name) {
+  if (name == "pointwise") return Matching::pointwise;
+  if (name == "integral") return Matching::integral;
+  throw std::invalid_argument("unknown matching '" + name + "' (pointwise or integral)");
+}
+
+std::string matching_name(Matching m) { return m == Matching::pointwise ? "pointwise" : "integral"; }
+
+ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol) {
+  if (nonmortar != 0 && nonmortar != 1)
+    throw std::invalid_argument("make_interface: the non-mortar body is 0 or 1, got " +
+                                std::to_string(nonmortar));
+  ContactInterface g;
+  g.nonmortar = nonmortar;
+  // Gamma_c is the top side of body 2 and the bottom side of body 1.
+  const auto side_of = [](int l) { return l == 0 ? Side::bottom : Side::top; };
+  g.nonmortar_trace = trace_on_side(bodies.body(nonmortar).mesh, side_of(nonmortar));
+  g.mortar_trace = trace_on_side(bodies.body(g.mortar()).mesh, side_of(g.mortar()));
+  g.grid = merge_traces(g.nonmortar_trace, g.mortar_trace, merge_tol);
+  g.space = end_modified_p1(g.nonmortar_trace);
+  g.matrices = mortar_matrices(g.nonmortar_trace, g.mortar_trace, g.grid, g.space);
+  return g;
+}
+
+namespace {
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Row coefficients on the non-mortar side (C_nm, per trace node) and on the mortar side
+// (C_m), so that (B u)_row = sum_j C_nm(row, j) u_nm,j.n_nm + sum_k C_m(row, k) u_m,k.n_m.
+struct RowCoefficients {
+  RowMatrix nonmortar, mortar;
+  std::vector<int> row_node;
+};
+
+RowCoefficients pointwise_rows(const ContactInterface& g) {
+  const int n = g.nonmortar_trace.num_nodes();
+  std::vector<Eigen::Triplet<double>> nm, m;
+  RowCoefficients c;
+  for (int a = 0; a < n; ++a) {
+    nm.emplace_back(a, a, 1.0);
+    // value of the mortar trace at x_a: its two hats on the element containing x_a
+    const double x = g.nonmortar_trace.x[a];
+    const auto& t = g.mortar_trace;
+    const int e = t.element_containing(x);
+    const double s = (x - t.x[e]) / (t.x[e + 1] - t.x[e]);
+    m.emplace_back(a, e, 1 - s);
+    m.emplace_back(a, e + 1, s);
+    c.row_node.push_back(a);
+  }
+  c.nonmortar.resize(n, n);
+  c.mortar.resize(n, g.mortar_trace.num_nodes());
+  c.nonmortar.setFromTriplets(nm.begin(), nm.end());
+  c.mortar.setFromTriplets(m.begin(), m.end());
+  return c;
+}
+
+RowCoefficients integral_rows(const ContactInterface& g) {
+  RowCoefficients c{g.matrices.D, g.matrices.M, {}};
+  for (int i = 0; i < g.space.dim(); ++i) c.row_node.push_back(g.space.node_of(i));
+  return c;
+}
+}  // namespace
+
+Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g,
+                              Matching matching, const std::vector<bool>& prescribed) {
+  if (static_cast<int>(prescribed.size()) != bodies.num_dofs())
+    throw std::invalid_argument("build_constraints: the prescribed mask has the wrong size");
+  const RowCoefficients c = matching == Matching::pointwise ? pointwise_rows(g) : integral_rows(g);
+  const int nm = g.nonmortar, m = g.mortar();
+  const double n_nm = TwoBodies::normal_y(nm), n_m = TwoBodies::normal_y(m);
+
+  Constraints out;
+  out.matching = matching;
+  std::vector<Eigen::Triplet<double>> entries;
+  int kept = 0;
+  for (int row = 0; row < c.nonmortar.rows(); ++row) {
+    std::vector<Eigen::Triplet<double>> this_row;
+    bool touches_unknown = false;
+    auto add = [&](int dof, double value) {
+      if (value == 0.0) return;
+      this_row.emplace_back(kept, dof, value);
+      touches_unknown = touches_unknown || !prescribed[dof];
+    };
+    for (RowMatrix::InnerIterator it(c.nonmortar, row); it; ++it)
+      add(bodies.dof(nm, g.nonmortar_trace.nodes[it.col()], 1), n_nm * it.value());
+    for (RowMatrix::InnerIterator it(c.mortar, row); it; ++it)
+      add(bodies.dof(m, g.mortar_trace.nodes[it.col()], 1), n_m * it.value());
+    if (!touches_unknown) continue;
+    entries.insert(entries.end(), this_row.begin(), this_row.end());
+    out.row_node.push_back(c.row_node[row]);
+    out.row_source.push_back(row);
+    out.pivot_dof.push_back(bodies.dof(nm, g.nonmortar_trace.nodes[c.row_node[row]], 1));
+    ++kept;
+  }
+  out.B.resize(kept, bodies.num_dofs());
+  out.B.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
+Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
+                           const std::function<double(double)>& g) {
+  const InterfaceTrace& t = gamma.nonmortar_trace;
+  Eigen::VectorXd G(static_cast<Eigen::Index>(c.row_source.size()));
+  if (c.matching == Matching::pointwise) {
+    for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g(t.x[c.row_source[r]]);
+    return G;
+  }
+  // int g phi_j on the non-mortar trace, then int g psi_i = sum_j C_ij int g phi_j
+  const SegmentRule rule = gauss_legendre(3);
+  Eigen::VectorXd g_phi = Eigen::VectorXd::Zero(t.num_nodes());
+  for (int e = 0; e < t.num_elements(); ++e) {
+    const double h = t.x[e + 1] - t.x[e];
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q], w = rule.weights[q] * h * g(t.x[e] + s * h);
+      g_phi[e] += (1 - s) * w;
+      g_phi[e + 1] += s * w;
+    }
+  }
+  const Eigen::VectorXd g_psi = gamma.space.C * g_phi;
+  for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g_psi[c.row_source[r]];
+  return G;
+}
+
+}  // namespace mortar

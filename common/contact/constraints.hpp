@@ -1,0 +1,60 @@
+// The discrete contact conditions on Gamma_c as rows of a matrix B acting on the global
+// displacement vector of both bodies (paper section 3; DESIGN.md):
+//  - pointwise matching (space V_h^P), one row per node a of the non-mortar trace:
+//      (B u)_a = [u_h.n](a) = u_nm(a).n_nm + sum_k phi^m_k(a) u_m,k.n_m;
+//  - integral matching (space V_h^I), one row per multiplier psi_i of M_h:
+//      (B u)_i = int psi_i [u_h.n] = sum_j D_ij u_nm,j.n_nm + sum_k M_ik u_m,k.n_m.
+// [u.n] = u1.n1 + u2.n2 = u2_y - u1_y, positive for penetration. Bilateral contact is B u = 0;
+// unilateral contact (chapter 5) is B u <= G.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/interface/interface_trace.hpp"
+#include "common/interface/merged_grid.hpp"
+#include "common/interface/mortar_matrices.hpp"
+#include "common/interface/multiplier_space.hpp"
+#include "common/contact/two_bodies.hpp"
+
+namespace mortar {
+
+enum class Matching { pointwise, integral };
+Matching parse_matching(const std::string& name);
+std::string matching_name(Matching m);
+
+// Everything the two matchings need to know about Gamma_c: which body is the non-mortar
+// side, both traces, their merged grid, M_h on the non-mortar trace and D, M.
+struct ContactInterface {
+  int nonmortar = 0;  // body index: 0 = body 1 (the paper's default), 1 = body 2
+  int mortar() const { return 1 - nonmortar; }
+  InterfaceTrace nonmortar_trace, mortar_trace;
+  MergedGrid grid;
+  MultiplierSpace space;
+  MortarMatrices matrices;
+};
+
+ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol = 1e-12);
+
+struct Constraints {
+  Matching matching = Matching::integral;
+  SparseMatrix B;              // rows x num_dofs of both bodies
+  std::vector<int> row_node;   // non-mortar trace node each row sits on (a, or psi_i's node)
+  std::vector<int> row_source;  // index of the row before dropping (node a, or i of psi_i)
+  // The non-mortar normal dof of each row's node: the unknown a row can be solved for.
+  std::vector<int> pivot_dof;
+};
+
+// Builds B and drops rows whose every entry sits on a prescribed (Dirichlet) dof: such a row
+// says nothing about the unknowns and would make the saddle-point matrix singular.
+Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& gamma,
+                              Matching matching, const std::vector<bool>& prescribed);
+
+// The right-hand side G of B u <= G for an initial gap g(x) >= 0 (paper section 5):
+// G_a = g(a) for pointwise rows, G_i = int g psi_i for integral rows (3-point Gauss on each
+// element of the non-mortar trace: exact for the quadratic gap of the Hertz scene).
+Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
+                           const std::function<double(double)>& g);
+
+}  // namespace mortar

@@ -1,0 +1,126 @@
+#include "common/contact/contact_fields.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/fem/quadrature.hpp"
+
+namespace mortar {
+
+InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
+                                const Eigen::VectorXd& lambda) {
+  const InterfaceTrace& t = g.nonmortar_trace;
+  InterfaceCurve p{t.x, std::vector<double>(t.x.size(), 0.0)};
+  if (c.matching == Matching::integral) {
+    // lambda_h = sum_i lambda_i psi_i = sum_j (C^T lambda)_j phi_j
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(g.space.dim());
+    for (std::size_t r = 0; r < c.row_source.size(); ++r) full[c.row_source[r]] = lambda[r];
+    const Eigen::VectorXd nodal = g.space.C.transpose() * full;
+    for (int j = 0; j < t.num_nodes(); ++j) p.value[j] = nodal[j];
+  } else {
+    for (std::size_t r = 0; r < c.row_source.size(); ++r) {
+      const int a = c.row_source[r];
+      const double left = a > 0 ? t.x[a] - t.x[a - 1] : 0.0;
+      const double right = a + 1 < t.num_nodes() ? t.x[a + 1] - t.x[a] : 0.0;
+      p.value[a] = lambda[r] / (0.5 * (left + right));
+    }
+  }
+  return p;
+}
+
+InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& g,
+                           const Eigen::VectorXd& u) {
+  // nodal normal displacement u_y of each trace, then both evaluated at the breakpoints
+  auto uy = [&](int l, const InterfaceTrace& t) {
+    std::vector<double> v;
+    for (int node : t.nodes) v.push_back(u[bodies.dof(l, node, 1)]);
+    return v;
+  };
+  const std::vector<double> nm = uy(g.nonmortar, g.nonmortar_trace), m = uy(g.mortar(), g.mortar_trace);
+  InterfaceCurve jump;
+  for (double x : g.grid.breakpoints) {
+    const double u_nm = g.nonmortar_trace.evaluate(nm, x), u_m = g.mortar_trace.evaluate(m, x);
+    // [u.n] = u1.n1 + u2.n2 = u2_y - u1_y whichever side is the non-mortar one
+    const double u1 = g.nonmortar == 0 ? u_nm : u_m, u2 = g.nonmortar == 0 ? u_m : u_nm;
+    jump.x.push_back(x);
+    jump.value.push_back(u2 - u1);
+  }
+  return jump;
+}
+
+double total_contact_force(const ContactInterface& g, const Constraints& c,
+                           const Eigen::VectorXd& lambda) {
+  if (c.matching == Matching::pointwise) return lambda.sum();
+  // int psi_i = sum_j C_ij int phi_j
+  const InterfaceTrace& t = g.nonmortar_trace;
+  Eigen::VectorXd phi_integral = Eigen::VectorXd::Zero(t.num_nodes());
+  for (int e = 0; e < t.num_elements(); ++e) {
+    phi_integral[e] += 0.5 * (t.x[e + 1] - t.x[e]);
+    phi_integral[e + 1] += 0.5 * (t.x[e + 1] - t.x[e]);
+  }
+  const Eigen::VectorXd psi_integral = g.space.C * phi_integral;
+  double total = 0;
+  for (std::size_t r = 0; r < c.row_source.size(); ++r) total += lambda[r] * psi_integral[c.row_source[r]];
+  return total;
+}
+
+// The integrand is squared, and a pressure scales with E: at E = 1e300 its square overflows,
+// at E = 1e-160 it underflows. So the differences are divided by the largest of them before
+// squaring and the root multiplied back (a scaled sum of squares), which leaves the result
+// the same for every unit of E.
+double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact) {
+  const SegmentRule g = gauss_legendre(4);
+  std::vector<double> difference, weight;
+  for (std::size_t e = 0; e + 1 < curve.x.size(); ++e) {
+    const double a = curve.x[e], b = curve.x[e + 1];
+    for (std::size_t q = 0; q < g.points.size(); ++q) {
+      const double s = g.points[q];
+      const double value = (1 - s) * curve.value[e] + s * curve.value[e + 1];
+      difference.push_back(value - exact(a + s * (b - a)));
+      weight.push_back(g.weights[q] * (b - a));
+    }
+  }
+  double scale = 0;
+  for (double d : difference) {
+    if (std::isnan(d)) return d;  // passed on, not hidden
+    scale = std::max(scale, std::fabs(d));
+  }
+  if (scale == 0 || std::isinf(scale)) return scale;
+  double sum = 0;
+  for (std::size_t k = 0; k < difference.size(); ++k) sum += weight[k] * std::pow(difference[k] / scale, 2);
+  return scale * std::sqrt(sum);
+}
+
+double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& f) {
+  InterfaceCurve zero{curve.x, std::vector<double>(curve.x.size(), 0.0)};
+  return l2_error(zero, f);
+}
+
+double ContactZone::half_width() const {
+  if (empty) return 0.0;
+  return 0.5 * (0.5 * (right_active + right_inactive) - 0.5 * (left_active + left_inactive));
+}
+
+ContactZone contact_zone(const InterfaceCurve& p) {
+  ContactZone z;
+  const int n = static_cast<int>(p.x.size());
+  int first = -1, last = -1;
+  for (int i = 0; i < n; ++i)
+    if (p.value[i] > 0) {
+      if (first < 0) first = i;
+      last = i;
+      ++z.active_nodes;
+      if (i > 0 && p.value[i - 1] > 0) ++z.active_elements;
+    }
+  if (first < 0) return z;
+  z.empty = false;
+  z.left_active = p.x[first];
+  z.right_active = p.x[last];
+  // at the ends of Gamma_c the zone can reach no further
+  z.left_inactive = first > 0 ? p.x[first - 1] : p.x[first];
+  z.right_inactive = last + 1 < n ? p.x[last + 1] : p.x[last];
+  return z;
+}
+
+}  // namespace mortar

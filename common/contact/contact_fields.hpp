@@ -1,0 +1,54 @@
+// What the solution says on Gamma_c: the normal jump [u_h.n] and the contact pressure, and
+// their L2(Gamma_c) errors against exact functions.
+//  - integral matching: the pressure is the multiplier itself, lambda_h = sum_i lambda_i psi_i,
+//    a P1 function on the non-mortar trace with nodal values C^T lambda;
+//  - pointwise matching: lambda_a is a nodal force, not a pressure. We report
+//    lambda_a / (tributary length of a) = lambda_a / (half the two element lengths at a),
+//    interpolated P1 on the non-mortar trace: a post-processed pressure, stated as such.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "common/contact/constraints.hpp"
+#include "common/contact/two_bodies.hpp"
+
+namespace mortar {
+
+// A function on Gamma_c that is P1 between the points x (values at the points).
+struct InterfaceCurve {
+  std::vector<double> x, value;
+};
+
+// Nodal pressure on the non-mortar trace.
+InterfaceCurve contact_pressure(const ContactInterface& gamma, const Constraints& c,
+                                const Eigen::VectorXd& lambda);
+
+// [u_h.n] = u2_y - u1_y, P1 on the merged grid (both traces are P1 there): exact values at
+// the merged breakpoints.
+InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& gamma,
+                           const Eigen::VectorXd& u);
+
+// int of the total normal force carried by the multipliers, sum_i lambda_i int psi_i (or the
+// sum of nodal forces for pointwise matching).
+double total_contact_force(const ContactInterface& gamma, const Constraints& c,
+                           const Eigen::VectorXd& lambda);
+
+// (int_{Gamma_c} (curve - exact)^2)^{1/2}, by 4-point Gauss on each piece of the curve.
+double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact);
+double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& exact_for_grid);
+
+// The contact zone read off a nodal pressure: the outermost nodes with p > 0 on each side and
+// their first neighbours with p = 0. The half-width estimate puts each edge of the zone at
+// the midpoint between the two, so it is off by at most half an element on each side.
+struct ContactZone {
+  bool empty = true;
+  double left_active = 0, right_active = 0;      // outermost nodes in contact
+  double left_inactive = 0, right_inactive = 0;  // their first neighbours out of contact
+  int active_nodes = 0;
+  int active_elements = 0;  // elements of the trace with p > 0 at both ends
+  double half_width() const;  // 0 when empty
+};
+ContactZone contact_zone(const InterfaceCurve& pressure);
+
+}  // namespace mortar

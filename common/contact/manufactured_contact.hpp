@@ -1,0 +1,66 @@
+// Exact solutions of frictionless contact between two different materials (DESIGN.md), for
+// convergence studies. On body l (l = 1 upper, 2 lower), for an x-profile (v, w = v', c):
+//
+//   u^l = ( alpha_l cos(y) v(x) - y c'(x),  beta_l sin(y) w(x) + c(x) ),    times A.
+//
+// On y = 0: u^1_y = u^2_y = c(x)                                   (3) normal continuity
+//           sigma_12 = mu_l (alpha_l (-sin 0) v - c' + beta_l sin 0 w' + c') = 0   (5)
+//           sigma_22 = (lambda_l alpha_l + (lambda_l + 2 mu_l) beta_l) w(x)        (4)
+// and (4) holds on both sides by the choice of beta_2. The tangential displacement jumps,
+// (alpha_1 - alpha_2) v(x): the bodies slide on each other. The pressure is
+// p = -sigma_N = 2 mu_1 A w(x), so the profile decides where the bodies press:
+//  - sloped_profile: w = s0 + cos(k x), k = 1.5 pi / L, w >= s0 - 1 > 0: contact everywhere,
+//    and p' != 0 at x = L (chapters 3-5);
+//  - flat_ends_profile: k = 2 pi / L, so p' = 0 at both ends of Gamma_c;
+//  - signorini_profile: w = (x* - x)_+^3: pressure on (0, x*), none beyond. With the gap
+//    g = A kappa (x - x*)_+^2 (signorini_gap) it is the exact solution of unilateral contact
+//    (9)-(11) with a contact zone (0, x*) and a separation zone (x*, L).
+#pragma once
+
+#include <Eigen/Dense>
+#include <functional>
+
+#include "common/fem/errors.hpp"
+#include "common/fem/p1_elasticity.hpp"
+
+namespace mortar {
+
+// The x-profile at one point: v, w = v' and two derivatives of w, c and three of c.
+struct ProfileValues {
+  double v = 0, w = 0, dw = 0, ddw = 0;
+  double c = 0, dc = 0, ddc = 0, dddc = 0;
+};
+using ContactProfile = std::function<ProfileValues(double x)>;
+
+ContactProfile sloped_profile(double L);
+ContactProfile flat_ends_profile(double L);
+ContactProfile signorini_profile(double L, double x_star);
+
+// The contact point of the signorini scene: x* = L (1/2 + sqrt(2)/10), never a node of a
+// mesh whose nodes are rational multiples of L.
+double signorini_contact_point(double L);
+// The initial gap of the signorini scene, A kappa (x - x*)_+^2 with kappa = 1 / L.
+double signorini_gap(double L, double x);
+
+class ManufacturedContact {
+ public:
+  ManufacturedContact(const Material& body1, const Material& body2, double L);  // sloped
+  ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile);
+
+  // l = 0 (body 1, y > 0) or 1 (body 2, y < 0)
+  Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const;
+  Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const;
+  Eigen::Matrix2d stress(int l, const Eigen::Vector2d& p) const;
+  Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const;  // f = -div sigma
+  double pressure(double x) const;           // -sigma_N on Gamma_c
+  double normal_displacement(double x) const;  // u^1_y = u^2_y = c(x) on Gamma_c
+  ExactSolution exact(int l) const;
+  const Material& material(int l) const { return l == 0 ? m1_ : m2_; }
+
+ private:
+  Material m1_, m2_;
+  ContactProfile profile_;
+  double alpha_[2], beta_[2];
+};
+
+}  // namespace mortar

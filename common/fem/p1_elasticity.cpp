@@ -1,0 +1,129 @@
+#include "common/fem/p1_elasticity.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mortar {
+
+Material::Material(double E, double nu) : E_(E), nu_(nu) {
+  if (!(std::isfinite(E) && E > 0))
+    throw std::invalid_argument("Material: Young's modulus E must be > 0, got " + std::to_string(E));
+  if (!(std::isfinite(nu) && nu > -1 && nu < 0.5))
+    throw std::invalid_argument("Material: Poisson ratio nu must be in (-1, 0.5), got " +
+                                std::to_string(nu));
+}
+
+Eigen::Matrix3d Material::voigt() const {
+  const double l = lambda(), m = mu();
+  Eigen::Matrix3d C;
+  C << l + 2 * m, l, 0,
+       l, l + 2 * m, 0,
+       0, 0, m;
+  return C;
+}
+
+std::array<Eigen::Vector2d, 3> triangle_vertices(const Mesh& mesh, int t) {
+  const auto& tri = mesh.triangles[t];
+  return {mesh.nodes[tri[0]], mesh.nodes[tri[1]], mesh.nodes[tri[2]]};
+}
+
+StrainMatrix strain_matrix(const std::array<Eigen::Vector2d, 3>& x) {
+  const double twice_area =
+      (x[1] - x[0]).x() * (x[2] - x[0]).y() - (x[1] - x[0]).y() * (x[2] - x[0]).x();
+  if (!(twice_area > 0))
+    throw std::invalid_argument("strain_matrix: triangle with non-positive area " +
+                                std::to_string(0.5 * twice_area) + " at (" +
+                                std::to_string(x[0].x()) + ", " + std::to_string(x[0].y()) + ")");
+  StrainMatrix B = StrainMatrix::Zero();
+  for (int k = 0; k < 3; ++k) {
+    // grad of the barycentric coordinate of vertex k: the opposite edge turned by 90 degrees
+    const Eigen::Vector2d& p = x[(k + 1) % 3];
+    const Eigen::Vector2d& q = x[(k + 2) % 3];
+    const double gx = (p.y() - q.y()) / twice_area, gy = (q.x() - p.x()) / twice_area;
+    B(0, 2 * k) = gx;
+    B(1, 2 * k + 1) = gy;
+    B(2, 2 * k) = gy;
+    B(2, 2 * k + 1) = gx;
+  }
+  return B;
+}
+
+ElementMatrix element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const Material& material) {
+  const StrainMatrix B = strain_matrix(x);
+  const double area =
+      0.5 * ((x[1] - x[0]).x() * (x[2] - x[0]).y() - (x[1] - x[0]).y() * (x[2] - x[0]).x());
+  return area * B.transpose() * material.voigt() * B;
+}
+
+void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
+                            std::vector<Eigen::Triplet<double>>& triplets) {
+  triplets.reserve(triplets.size() + 36 * mesh.triangles.size());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const ElementMatrix Ke = element_stiffness(triangle_vertices(mesh, t), material);
+    const auto& tri = mesh.triangles[t];
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        triplets.emplace_back(offset + 2 * tri[a / 2] + a % 2, offset + 2 * tri[b / 2] + b % 2, Ke(a, b));
+  }
+}
+
+SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  add_stiffness_triplets(mesh, material, 0, triplets);
+  SparseMatrix K(mesh.num_dofs(), mesh.num_dofs());
+  K.setFromTriplets(triplets.begin(), triplets.end());  // duplicates are summed
+  return K;
+}
+
+Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree) {
+  const TriangleRule rule = triangle_rule(degree);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(mesh.num_dofs());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto x = triangle_vertices(mesh, t);
+    const double area = mesh.area(t);
+    const auto& tri = mesh.triangles[t];
+    for (size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q].x(), r = rule.points[q].y();
+      const double phi[3] = {1 - s - r, s, r};
+      const Eigen::Vector2d fq = f(x[0] + s * (x[1] - x[0]) + r * (x[2] - x[0]));
+      for (int k = 0; k < 3; ++k) {
+        F[2 * tri[k]] += area * rule.weights[q] * fq.x() * phi[k];
+        F[2 * tri[k] + 1] += area * rule.weights[q] * fq.y() * phi[k];
+      }
+    }
+  }
+  return F;
+}
+
+void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g,
+                  int n_gauss) {
+  const SegmentRule rule = gauss_legendre(n_gauss);
+  const auto& nodes = mesh.nodes_on(side);
+  for (size_t e = 0; e + 1 < nodes.size(); ++e) {
+    const int a = nodes[e], b = nodes[e + 1];
+    const Eigen::Vector2d xa = mesh.nodes[a], xb = mesh.nodes[b];
+    const double length = (xb - xa).norm();
+    for (size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q];
+      const Eigen::Vector2d gq = length * rule.weights[q] * g(xa + s * (xb - xa));
+      F.segment<2>(2 * a) += (1 - s) * gq;
+      F.segment<2>(2 * b) += s * gq;
+    }
+  }
+}
+
+std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const Material& material,
+                                              const Eigen::VectorXd& u) {
+  std::vector<Eigen::Vector3d> stress(mesh.triangles.size());
+  const Eigen::Matrix3d C = material.voigt();
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto& tri = mesh.triangles[t];
+    Eigen::Matrix<double, 6, 1> ue;
+    for (int k = 0; k < 3; ++k) ue.segment<2>(2 * k) = u.segment<2>(2 * tri[k]);
+    stress[t] = C * strain_matrix(triangle_vertices(mesh, t)) * ue;
+  }
+  return stress;
+}
+
+}  // namespace mortar

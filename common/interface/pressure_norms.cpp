@@ -1,0 +1,173 @@
+#include "common/interface/pressure_norms.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/fem/quadrature.hpp"
+
+namespace mortar {
+
+namespace {
+// Each piece of an element gets a 5-point Gauss rule, and each element is cut into 4 pieces
+// (and at every breakpoint of p_h inside it): p may have a kink (a contact point) or a C^2
+// point inside an element, where one rule per element would lose its order.
+constexpr int pieces_per_element = 4;
+constexpr int gauss_points = 5;
+
+// Calls add(x, w) for the points x and weights w of a composite rule on [a, b], cut at the
+// given interior points.
+template <class Add>
+void composite_rule(double a, double b, std::vector<double> cuts, const Add& add) {
+  static const SegmentRule rule = gauss_legendre(gauss_points);
+  cuts.insert(cuts.begin(), a);
+  cuts.push_back(b);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double h = (cuts[k + 1] - cuts[k]) / pieces_per_element;
+    for (int piece = 0; piece < pieces_per_element; ++piece) {
+      const double left = cuts[k] + piece * h;
+      for (std::size_t q = 0; q < rule.points.size(); ++q) add(left + rule.points[q] * h, rule.weights[q] * h);
+    }
+  }
+}
+
+// p_h between its points, P1; its breakpoints strictly inside (a, b).
+struct CurveReader {
+  const InterfaceCurve& curve;
+
+  double operator()(double x) const {
+    const auto& xs = curve.x;
+    const auto it = std::upper_bound(xs.begin(), xs.end(), x);
+    const std::size_t e = std::clamp<std::size_t>(static_cast<std::size_t>(it - xs.begin()), 1, xs.size() - 1) - 1;
+    const double t = (x - xs[e]) / (xs[e + 1] - xs[e]);
+    return (1 - t) * curve.value[e] + t * curve.value[e + 1];
+  }
+  std::vector<double> breakpoints_inside(double a, double b) const {
+    const auto first = std::upper_bound(curve.x.begin(), curve.x.end(), a);
+    const auto last = std::lower_bound(curve.x.begin(), curve.x.end(), b);
+    return first < last ? std::vector<double>(first, last) : std::vector<double>{};
+  }
+};
+
+void check_curve(const InterfaceCurve& c, const InterfaceTrace& t) {
+  if (c.x.size() < 2 || c.x.size() != c.value.size())
+    throw std::invalid_argument("pressure_errors: p_h needs at least 2 points and one value per point, got " +
+                                std::to_string(c.x.size()) + " points and " + std::to_string(c.value.size()) +
+                                " values");
+  for (std::size_t i = 0; i + 1 < c.x.size(); ++i)
+    if (!(c.x[i + 1] > c.x[i]))
+      throw std::invalid_argument("pressure_errors: the points of p_h must increase, x[" + std::to_string(i + 1) +
+                                  "] = " + std::to_string(c.x[i + 1]) + " after " + std::to_string(c.x[i]));
+  const double tol = 1e-12 * t.length();
+  if (std::fabs(c.x.front() - t.x.front()) > tol || std::fabs(c.x.back() - t.x.back()) > tol)
+    throw std::invalid_argument("pressure_errors: p_h spans [" + std::to_string(c.x.front()) + ", " +
+                                std::to_string(c.x.back()) + "], the non-mortar trace [" +
+                                std::to_string(t.x.front()) + ", " + std::to_string(t.x.back()) + "]");
+}
+
+// ||p - p_h||^2_{L2(e)} for every element e of the non-mortar trace, as scale^2 * squares[e].
+// A pressure scales with E, and its square overflows at E = 1e300 and underflows at E = 1e-160:
+// the differences are divided by the largest of them before squaring.
+struct ElementSquares {
+  double scale = 0;  // the largest |p - p_h| at the quadrature points
+  std::vector<double> squares;
+};
+ElementSquares element_squares(const InterfaceTrace& t, const InterfaceCurve& p_h,
+                               const std::function<double(double)>& p) {
+  const CurveReader reader{p_h};
+  std::vector<std::vector<std::pair<double, double>>> points(static_cast<std::size_t>(t.num_elements()));
+  ElementSquares s;
+  bool nan = false;
+  for (int e = 0; e < t.num_elements(); ++e)
+    composite_rule(t.x[e], t.x[e + 1], reader.breakpoints_inside(t.x[e], t.x[e + 1]), [&](double x, double w) {
+      const double d = p(x) - reader(x);
+      nan = nan || std::isnan(d);
+      s.scale = std::max(s.scale, std::fabs(d));
+      points[e].push_back({d, w});
+    });
+  if (nan) s.scale = std::nan("");  // passed on, not hidden
+  s.squares.assign(points.size(), 0.0);
+  if (!(s.scale > 0) || std::isinf(s.scale)) return s;
+  for (std::size_t e = 0; e < points.size(); ++e)
+    for (const auto& [d, w] : points[e]) s.squares[e] += w * (d / s.scale) * (d / s.scale);
+  return s;
+}
+
+// The norms of one error, from its element squares: whole, interior, ends, mesh-dependent.
+struct SplitNorms {
+  double whole = 0, interior = 0, ends = 0, hminus = 0;
+};
+SplitNorms split_norms(const InterfaceTrace& t, const ElementSquares& error) {
+  const int N = t.num_elements();
+  const std::vector<double>& squares = error.squares;
+  if (!(error.scale > 0) || std::isinf(error.scale)) return {error.scale, error.scale, error.scale, error.scale};
+  SplitNorms s;
+  for (int e = 0; e < N; ++e) {
+    const bool end = e == 0 || e == N - 1;  // where M_h^1 is constant (paper: a1 or a2 in T)
+    (end ? s.ends : s.interior) += squares[e];
+    s.whole += squares[e];
+    s.hminus += (t.x[e + 1] - t.x[e]) * squares[e];
+  }
+  s.whole = error.scale * std::sqrt(s.whole);
+  s.interior = error.scale * std::sqrt(s.interior);
+  s.ends = error.scale * std::sqrt(s.ends);
+  s.hminus = error.scale * std::sqrt(s.hminus);
+  return s;
+}
+}  // namespace
+
+InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p) {
+  const InterfaceTrace& t = gamma.nonmortar_trace;
+  const auto& C = gamma.space.C;
+  if (C.cols() != t.num_nodes())
+    throw std::invalid_argument("l2_projection: M_h has " + std::to_string(C.cols()) + " trace nodes, the trace " +
+                                std::to_string(t.num_nodes()));
+  // the load (int p phi_j)_j, against the P1 mass matrix of the trace
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(t.num_nodes());
+  for (int e = 0; e < t.num_elements(); ++e) {
+    const double h = t.x[e + 1] - t.x[e];
+    composite_rule(t.x[e], t.x[e + 1], {}, [&](double x, double w) {
+      const double s = (x - t.x[e]) / h;
+      load[e] += w * (1 - s) * p(x);
+      load[e + 1] += w * s * p(x);
+    });
+  }
+  const Eigen::SparseMatrix<double> M_phi = t.mass_matrix();
+  // Gram matrix of the psi_i: (psi_i, psi_k) = (C M_phi C^T)_ik, SPD since the psi_i are independent
+  const Eigen::SparseMatrix<double> gram = C * M_phi * C.transpose();
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(gram);
+  if (factor.info() != Eigen::Success)
+    throw std::runtime_error("l2_projection: the Gram matrix of M_h (" + std::to_string(gram.rows()) +
+                             " multipliers) could not be factored");
+  const Eigen::VectorXd coefficients = factor.solve(Eigen::VectorXd(C * load));
+  const Eigen::VectorXd nodal = C.transpose() * coefficients;
+  return {t.x, std::vector<double>(nodal.data(), nodal.data() + nodal.size())};
+}
+
+PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCurve& p_h,
+                               const std::function<double(double)>& p) {
+  const InterfaceTrace& t = gamma.nonmortar_trace;
+  check_curve(p_h, t);
+  const SplitNorms computed = split_norms(t, element_squares(t, p_h, p));
+  const SplitNorms best = split_norms(t, element_squares(t, l2_projection(gamma, p), p));
+  const InterfaceCurve zero{t.x, std::vector<double>(t.x.size(), 0.0)};
+  const SplitNorms size = split_norms(t, element_squares(t, zero, p));
+
+  PressureErrors r;
+  r.l2 = computed.whole;
+  r.l2_interior = computed.interior;
+  r.l2_ends = computed.ends;
+  r.hminus = computed.hminus;
+  r.best_l2 = best.whole;
+  r.best_l2_interior = best.interior;
+  r.best_hminus = best.hminus;
+  r.norm_l2 = size.whole;
+  r.norm_hminus = std::sqrt(t.length()) * size.whole;
+  return r;
+}
+
+}  // namespace mortar

@@ -1,0 +1,280 @@
+#include "common/study/bilateral_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "common/linalg/memory_estimate.hpp"
+#include "common/study/stopwatch.hpp"
+
+namespace mortar {
+
+namespace {
+// A ceiling independent of the machine (it keeps node and dof indices far inside int);
+// memory_shortfall refuses earlier wherever less than about 36 GB is free.
+constexpr double max_dofs = 12'000'000;
+
+constexpr double max_cells_per_side = 1 << 16;
+
+// Cells along and across each body at the finest level, in floating point so that absurd
+// heights or aspects cannot wrap an int before they are checked.
+struct FinestSize {
+  double n1, m1, n2, m2;
+  double dofs() const { return 2 * (n1 + 1) * (m1 + 1) + 2 * (n2 + 1) * (m2 + 1); }
+  double largest() const { return std::max({n1, m1, n2, m2}); }
+};
+
+FinestSize finest_size(const BilateralStudyOptions& o) {
+  FinestSize s;
+  s.n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  s.n2 = std::max(2.0, std::round(s.n1 / o.h_ratio));
+  s.m1 = std::max(1.0, std::round(o.aspect * s.n1 * o.H1 / o.L));
+  s.m2 = std::max(1.0, std::round(o.aspect * s.n2 * o.H2 / o.L));
+  return s;
+}
+}  // namespace
+
+void add_two_body_options(OptionParser& parser, TwoBodyOptions& o) {
+  parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)",
+                    Range::closed(0.01, 100));
+  parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, which carries the multipliers (1 or 2)", Range::closed(1, 2));
+  parser.add_double("E1", o.E1, "Young's modulus of body 1 [Pa]", Range::positive());
+  parser.add_double("nu1", o.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
+  parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::positive());
+  parser.add_double("nu2", o.nu2, "Poisson ratio of body 2", Range::open(-1, 0.5));
+  parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H1", o.H1, "height of body 1 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
+}
+
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv) {
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
+  add_two_body_options(parser, o);
+  parser.add_double("aspect", o.aspect, "cell width / cell height (20 for 1:20 cells)", Range::closed(0.05, 20));
+  parser.add_choice("saddle-solver", o.saddle_solver, {"elimination", "lu"}, "saddle-point solver");
+  parser.add_choice("pressure-ends", o.pressure_ends, {"sloped", "flat"},
+                    "manufactured pressure: sloped (sigma_N' != 0 at x = L) or flat (sigma_N' = 0 at both ends)");
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3; not with --n0 or --levels)");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.parse(argc, argv);
+  if (o.quick) {
+    for (const char* name : {"n0", "levels"})
+      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
+    o.n0 = 6;
+    o.levels = 3;
+  }
+  check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
+  const FinestSize size = finest_size(o);
+  if (size.largest() > max_cells_per_side || size.dofs() > max_dofs) {
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "the finest level would have %.3g dofs and up to %.3g cells along a side "
+                  "(limits %.3g and %.3g; check also --L, --H1, --H2, --aspect)",
+                  size.dofs(), size.largest(), max_dofs, max_cells_per_side);
+    parser.fail("levels", message);
+  }
+  const std::string memory = memory_shortfall(size.dofs(), bytes_per_dof_single_solve, machine_memory());
+  if (!memory.empty()) parser.fail("levels", memory);
+  prepare_output_folder(parser, o.out);
+}
+
+ManufacturedContact manufactured_solution(const BilateralStudyOptions& o) {
+  const Material m1(o.E1, o.nu1), m2(o.E2, o.nu2);
+  return ManufacturedContact(m1, m2, o.pressure_ends == "flat" ? flat_ends_profile(o.L) : sloped_profile(o.L));
+}
+
+void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect) {
+  const double n2_coarsest = std::round(n0 / o.h_ratio);
+  if (n2_coarsest < 2) {
+    char message[200];
+    std::snprintf(message, sizeof message,
+                  "body 2 would have %.0f elements along Gamma_c on the coarsest level (n0 / h-ratio = %.3g); "
+                  "it needs at least 2 to be refined with body 1: raise --n0 or lower --h-ratio",
+                  n2_coarsest, n0 / o.h_ratio);
+    parser.fail("h-ratio", message);
+  }
+  // the cells' width / height: (L / n) / (H / m), m as two_body_geometry rounds it; 10% above
+  // the --aspect limit of 20 leaves room for that rounding
+  constexpr double limit = 22;
+  for (const double n1 : {static_cast<double>(n0), std::ldexp(static_cast<double>(n0), levels - 1)})
+    for (int l = 0; l < 2; ++l) {
+      const double n = l == 0 ? n1 : std::max(2.0, std::round(n1 / o.h_ratio));
+      const double H = l == 0 ? o.H1 : o.H2;
+      const double m = std::max(1.0, std::round(aspect * n * H / o.L));
+      const double shape = (o.L / n) / (H / m);
+      if (shape > limit || shape < 1 / limit) {
+        char message[240];
+        std::snprintf(message, sizeof message,
+                      "the cells of body %d would be %.3g:1 (width L / %.0f = %.3g m, height H%d / %.0f = %.3g m); "
+                      "beyond 20:1 either way the solves degrade: check --L, --H1, --H2 and --aspect",
+                      l + 1, shape >= 1 ? shape : 1 / shape, n, o.L / n, l + 1, m, H / m);
+        parser.fail("L", message);
+      }
+    }
+}
+
+TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect) {
+  TwoBodyGeometry g;
+  g.L = o.L;
+  g.H1 = o.H1;
+  g.H2 = o.H2;
+  g.jitter = o.jitter;
+  g.n1 = n1;
+  g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
+  g.m1 = std::max(1, static_cast<int>(std::lround(aspect * g.n1 * o.H1 / o.L)));
+  g.m2 = std::max(1, static_cast<int>(std::lround(aspect * g.n2 * o.H2 / o.L)));
+  return g;
+}
+
+TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level) {
+  return two_body_geometry(o, o.n0 << level, o.aspect);
+}
+
+BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching) {
+  BilateralOptions b;
+  b.matching = matching;
+  b.nonmortar = o.nonmortar - 1;
+  b.solver = parse_saddle_solver(o.saddle_solver);
+  return b;
+}
+
+// Pressure errors relative to the norm of the exact p: the L2 ones (whole, interior, ends,
+// best approximation) to ||p||_{L2}, so that the squares of interior and ends still add up to
+// the whole; the mesh-dependent ones to |Gamma_c|^{1/2} ||p||_{L2} (PressureErrors::norm_hminus).
+Row BilateralLevel::row() const {
+  const PressureErrors& p = pressure_errors;
+  return {{"h", std::max(h1, h2)},
+          {"h1", h1},
+          {"h2", h2},
+          {"dofs", static_cast<double>(bodies.num_dofs())},
+          {"multipliers", static_cast<double>(solution.lambda.size())},
+          {"time_s", time_s},
+          {"limit_s", limit_s},
+          {"err_energy", err_energy},
+          {"err_l2", err_l2},
+          {"err_pressure", p.l2 / p.norm_l2},
+          {"err_pressure_interior", p.l2_interior / p.norm_l2},
+          {"err_pressure_ends", p.l2_ends / p.norm_l2},
+          {"err_pressure_hminus", p.hminus / p.norm_hminus},
+          {"err_pressure_best", p.best_l2 / p.norm_l2},
+          {"err_pressure_best_interior", p.best_l2_interior / p.norm_l2},
+          {"err_pressure_best_hminus", p.best_hminus / p.norm_hminus},
+          {"err_jump", err_jump}};
+}
+
+BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
+                                        const BilateralOptions& options) {
+  TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
+  const Stopwatch clock;  // loads, stiffness, constraints, solve: everything but the mesh
+  const SceneData scene = manufactured_scene(bodies, exact);
+  BilateralLevel r{std::move(bodies), {}, {}, {}};
+  r.solution = solve_bilateral(r.bodies, scene, options);
+  r.time_s = clock.seconds();
+  r.limit_s = two_body_limit(r.bodies, scene);
+
+  ErrorNorms norms;
+  for (int l = 0; l < 2; ++l)
+    norms += error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material,
+                         r.bodies.part(r.solution.u, l), exact.exact(l));
+  r.err_energy = norms.relative_energy();  // the broken energy norm over both bodies
+  r.err_l2 = norms.relative_l2();
+  r.pressure = contact_pressure(r.solution.gamma, r.solution.constraints, r.solution.lambda);
+  r.jump = normal_jump(r.bodies, r.solution.gamma, r.solution.u);
+  const auto p = [&](double x) { return exact.pressure(x); };
+  const auto c = [&](double x) { return exact.normal_displacement(x); };
+  r.pressure_errors = pressure_errors(r.solution.gamma, r.pressure, p);
+  // the exact jump is zero: measure [u_h.n] against the size of u.n itself
+  r.err_jump = l2_error(r.jump, [](double) { return 0.0; }) / l2_norm(r.jump, c);
+  r.h1 = r.solution.gamma.nonmortar == 0 ? r.solution.gamma.nonmortar_trace.max_element_length()
+                                         : r.solution.gamma.mortar_trace.max_element_length();
+  r.h2 = r.solution.gamma.nonmortar == 0 ? r.solution.gamma.mortar_trace.max_element_length()
+                                         : r.solution.gamma.nonmortar_trace.max_element_length();
+  return r;
+}
+
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching) {
+  TwoBodyGeometry g;
+  g.L = o.L;
+  g.H1 = o.H1;
+  g.H2 = o.H2;
+  g.n1 = 6;   // h2 / h1 = 3 / 7: n2 = 14, no node of one trace on the other but the ends
+  g.n2 = 14;
+  g.m1 = 3;
+  g.m2 = 7;
+  g.jitter = o.jitter;
+  const TwoBodies bodies = make_two_bodies(g, Material(o.E1, o.nu1), Material(o.E2, o.nu2));
+  const double p = 0.01 * std::min(o.E1, o.E2);
+  const SceneData scene = patch_test_scene(bodies, p);
+  const BilateralSolution s = solve_bilateral(bodies, scene, solver_options(o, matching));
+
+  PatchTestResult out;
+  for (int l = 0; l < 2; ++l) {
+    const Mesh& mesh = bodies.body(l).mesh;
+    const auto stress = element_stresses(mesh, bodies.body(l).material, bodies.part(s.u, l));
+    InterfaceCurve& curve = l == 0 ? out.sigma22_body1 : out.sigma22_body2;
+    for (std::size_t t = 0; t < stress.size(); ++t) {
+      out.rel_error = std::max(out.rel_error, std::fabs(stress[t][1] + p) / p);
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector2d centroid = (mesh.nodes[tri[0]] + mesh.nodes[tri[1]] + mesh.nodes[tri[2]]) / 3;
+      const bool touches_gamma = std::fabs(mesh.nodes[tri[0]].y()) < 1e-12 * o.L ||
+                                 std::fabs(mesh.nodes[tri[1]].y()) < 1e-12 * o.L ||
+                                 std::fabs(mesh.nodes[tri[2]].y()) < 1e-12 * o.L;
+      if (touches_gamma) {
+        curve.x.push_back(centroid.x());
+        curve.value.push_back(stress[t][1] / p);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace mortar
+
+namespace mortar {
+
+BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                                   Matching matching) {
+  BilateralStudy study;
+  const BilateralOptions solver = solver_options(o, matching);
+  for (int level = 0; level < o.levels; ++level) {
+    study.finest = std::make_unique<BilateralLevel>(
+        solve_manufactured_level(exact, level_geometry(o, level), solver));
+    study.table.add(study.finest->row());
+  }
+  study.patch_pointwise = run_patch_test(o, Matching::pointwise);
+  study.patch_integral = run_patch_test(o, Matching::integral);
+  return study;
+}
+
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
+                             const BilateralStudy& study, Matching matching) {
+  const BilateralLevel& f = *study.finest;
+  const bool integral = matching == Matching::integral;
+  JsonObject results;
+  results.set("h1_m", f.h1)
+      .set("h2_m", f.h2)
+      .set("dofs", f.bodies.num_dofs())
+      .set("multipliers", static_cast<int>(f.solution.lambda.size()))
+      .set("time_s", f.time_s)
+      .set("limit_s", f.limit_s)
+      .set("limit_ratio", f.time_s / f.limit_s)
+      .set("err_energy", f.err_energy)
+      .set("err_l2", f.err_l2)
+      .set("err_pressure", f.pressure_errors.l2 / f.pressure_errors.norm_l2)
+      .set("err_pressure_hminus", f.pressure_errors.hminus / f.pressure_errors.norm_hminus)
+      .set("err_pressure_best", f.pressure_errors.best_l2 / f.pressure_errors.norm_l2)
+      .set("err_jump", f.err_jump)
+      .set("patch_test_rel_error", (integral ? study.patch_integral : study.patch_pointwise).rel_error)
+      .set(integral ? "patch_test_rel_error_pointwise" : "patch_test_rel_error_integral",
+           (integral ? study.patch_pointwise : study.patch_integral).rel_error)
+      .set("matching", matching_name(matching))
+      .set("saddle_solver", o.saddle_solver);
+  study.table.write_csv(o.out + "/convergence.csv");
+  write_summary(o.out + "/summary.json", parser, study.rates(), results);
+}
+
+}  // namespace mortar

@@ -1,0 +1,100 @@
+// The convergence study shared by chapters 3 and 4: the manufactured two-material solution on
+// a sequence of nonmatching meshes, and the patch test, for one matching at a time.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "common/contact/bilateral_contact.hpp"
+#include "common/contact/contact_fields.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/fem/errors.hpp"
+#include "common/contact/manufactured_contact.hpp"
+#include "common/study/options.hpp"
+#include "common/interface/pressure_norms.hpp"
+
+namespace mortar {
+
+// The options every two-body chapter (3, 4, 5) shares: meshes along Gamma_c, materials, sizes.
+struct TwoBodyOptions {
+  double h_ratio = 1.5;  // h2 / h1
+  int nonmortar = 1;     // 1 or 2, as the user counts bodies
+  double E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25;
+  double L = 1, H1 = 0.5, H2 = 0.5;
+  double jitter = 0;
+};
+void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
+
+struct BilateralStudyOptions : TwoBodyOptions {
+  int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
+  int levels = 6;
+  double aspect = 1;  // cell width / cell height
+  std::string saddle_solver = "elimination";
+  std::string pressure_ends = "sloped";  // the manufactured sigma_N: sloped (p'(L) != 0) or flat
+  std::string out;
+  bool quick = false;
+  bool no_plot = false;
+};
+
+// Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv);
+
+// The manufactured solution --pressure-ends asks for: sloped_profile (sigma_N' != 0 at x = L,
+// which caps the L2 best approximation in M_h^1 at h^{3/2}) or flat_ends_profile
+// (sigma_N' = 0 at both ends, so the interior rate shows).
+ManufacturedContact manufactured_solution(const BilateralStudyOptions& o);
+
+// Refuses (status 2, naming the option) meshes that the options would make degenerate at
+// the coarsest (n1 = n0) or finest level: body 2 with fewer than 2 elements before its
+// max(2, .) floor, which then stays unrefined and makes rates meaningless; cells longer than
+// 20:1 either way, whether from --aspect or from --L against --H1/--H2 (beyond it the solves
+// stop converging and say nothing).
+void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect);
+
+// Meshes with n1 body-1 elements along Gamma_c: n2 = max(2, round(n1 / h_ratio)), m_l rows
+// with cells of width / height = aspect. Chapters 3-5 all build their levels this way.
+TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect);
+// The meshes of one level of chapters 3 and 4: n1 = n0 2^level.
+TwoBodyGeometry level_geometry(const BilateralStudyOptions& o, int level);
+BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matching);
+
+struct BilateralLevel {
+  TwoBodies bodies;
+  BilateralSolution solution;
+  InterfaceCurve pressure, jump;
+  double h1 = 0, h2 = 0;
+  double time_s = 0, limit_s = 0;
+  double err_energy = 0, err_l2 = 0, err_jump = 0;
+  PressureErrors pressure_errors{};  // absolute; row() divides by the norms of the exact p
+  Row row() const;
+};
+
+BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
+                                        const BilateralOptions& options);
+
+// The patch test on meshes with h2 / h1 = 3 / 7: max over all triangles of
+// |sigma_22 + p| / p, and sigma_22 in the triangles along Gamma_c for the figure.
+struct PatchTestResult {
+  double rel_error = 0;
+  InterfaceCurve sigma22_body1, sigma22_body2;  // element centroids' x and sigma_22 / p
+};
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching);
+
+// The whole study of one chapter: every level of the manufactured solution (one line each as
+// it finishes), then the patch test with both matchings on the same meshes.
+struct BilateralStudy {
+  ConvergenceTable table;
+  std::unique_ptr<BilateralLevel> finest;
+  PatchTestResult patch_pointwise, patch_integral;
+  std::map<std::string, double> rates() const { return table.rates(); }
+};
+BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                                   Matching matching);
+
+// convergence.csv and summary.json; results hold the finest level, the patch test of this
+// chapter's matching (patch_test_rel_error) and of the other one.
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
+                             const BilateralStudy& study, Matching matching);
+
+}  // namespace mortar

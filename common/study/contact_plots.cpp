@@ -1,0 +1,150 @@
+#include "common/study/contact_plots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace mortar {
+
+namespace {
+Series curve_series(const InterfaceCurve& c, const std::string& title, const std::string& style,
+                    const std::string& extra) {
+  // sort by x: element values along Gamma_c arrive in mesh order
+  std::vector<std::size_t> order(c.x.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.x[a] < c.x[b]; });
+  Series s{title, {}, {}, style, extra};
+  for (std::size_t i : order) {
+    s.x.push_back(c.x[i]);
+    s.y.push_back(c.value[i]);
+  }
+  return s;
+}
+
+// One colour per quantity; a best approximation and a reference slope take the colour of the
+// quantity they stand beside.
+struct ErrorCurve {
+  std::string column, title, marker, colour;
+  bool best = false;  // a best approximation in M_h^1: open markers, dotted
+};
+const std::vector<ErrorCurve>& error_curves() {
+  static const std::vector<ErrorCurve> curves = {
+      {"err_energy", "u, broken energy norm", "pt 7", "#1f77b4"},
+      {"err_l2", "u, L^2", "pt 5", "#2ca02c"},
+      {"err_pressure", "pressure, L^2(Gamma_c)", "pt 9", "#d62728"},
+      {"err_pressure_best", "its L^2 best approximation in M_h^1", "pt 8", "#d62728", true},
+      {"err_pressure_hminus", "pressure, H^{-1/2}_h = (sum_e h_e ||.||_e^2)^{1/2}", "pt 13", "#9467bd"},
+      {"err_pressure_best_hminus", "the same of the L^2 best approximation", "pt 12", "#9467bd", true},
+      {"err_jump", "jump [u.n], L^2(Gamma_c) / ||u.n||", "pt 11", "#ff7f0e"},
+  };
+  return curves;
+}
+
+// C h^p through the anchor's finest point lowered by the offset, over the anchor's h range:
+// dashed, in the anchor's colour, with its label (the theorem that bounds the anchor).
+// Two slopes beside the same quantity share its colour; their dash patterns (dt 2, 4, 5, 6, by
+// the slope's place in the list) tell them apart.
+Series reference_line(const Series& anchor, const std::string& colour, const ReferenceSlope& r, std::size_t k) {
+  std::size_t finest = 0, coarsest = 0;
+  for (std::size_t i = 0; i < anchor.x.size(); ++i) {
+    if (anchor.x[i] < anchor.x[finest]) finest = i;
+    if (anchor.x[i] > anchor.x[coarsest]) coarsest = i;
+  }
+  const double C = (1 - r.offset) * anchor.y[finest] / std::pow(anchor.x[finest], r.slope);
+  char fallback[32];
+  std::snprintf(fallback, sizeof fallback, "slope %g", r.slope);
+  static const int dash[] = {2, 4, 5, 6};
+  Series line{r.label.empty() ? fallback : r.label, {}, {}, "lines",
+              "dt " + std::to_string(dash[k % 4]) + " lw 1.5 lc rgb '" + colour + "'"};
+  for (std::size_t i : {finest, coarsest}) {
+    line.x.push_back(anchor.x[i]);
+    line.y.push_back(C * std::pow(anchor.x[i], r.slope));
+  }
+  return line;
+}
+}  // namespace
+
+void plot_contact_errors(const std::string& folder, const ConvergenceTable& table,
+                         const std::string& title, const std::vector<ReferenceSlope>& slopes,
+                         bool run) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = "h = max(h1, h2) [m]";
+  fig.ylabel = "relative error [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "bottom right font ',10'";  // below the data: the slopes keep the lower right free
+  fig.width = 1000;
+  fig.height = 900;
+  const auto h = table.column("h");
+  for (const ErrorCurve& c : error_curves())
+    fig.series.push_back({c.title, h, table.column(c.column), "linespoints",
+                          c.marker + " ps 1.2 lc rgb '" + c.colour + "'" + (c.best ? " lw 1 dt 3" : " lw 2")});
+  for (std::size_t k = 0; k < slopes.size(); ++k) {
+    const ReferenceSlope& r = slopes[k];
+    if (r.anchor < 0 || r.anchor >= static_cast<int>(error_curves().size()))
+      throw std::invalid_argument("plot_contact_errors: reference slope anchored to series " +
+                                  std::to_string(r.anchor) + " of " + std::to_string(error_curves().size()));
+    fig.series.push_back(reference_line(fig.series[r.anchor], error_curves()[r.anchor].colour, r, k));
+  }
+  write_figure(folder, "error_vs_h", fig, run);
+}
+
+void plot_contact_error_vs_time(const std::string& folder, const ConvergenceTable& table,
+                                const std::string& title, bool run) {
+  const TimedErrors data{table.column("err_energy"), table.column("time_s"), table.column("limit_s"),
+                         "this program (assemble, constrain, solve)",
+                         "physical limit (assemble K, Cholesky, one solve)"};
+  write_figure(folder, "error_vs_time",
+               error_against_time(title, "wall time [s]", "relative error, broken energy norm [-]", data), run);
+}
+
+void plot_pressure(const std::string& folder, const BilateralLevel& level,
+                   const ManufacturedContact& exact, const std::string& title, bool run) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "contact pressure p = -sigma_N [Pa]";
+  fig.key = "top right";
+  Series reference{"exact -sigma_N", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
+  const double L = level.jump.x.back();
+  for (int i = 0; i <= 400; ++i) {
+    reference.x.push_back(L * i / 400.0);
+    reference.y.push_back(exact.pressure(L * i / 400.0));
+  }
+  fig.series.push_back(reference);
+  fig.series.push_back(curve_series(level.pressure, "computed, at the non-mortar nodes", "linespoints",
+                                    "pt 7 ps 0.8 lc rgb '#1f77b4'"));
+  write_figure(folder, "pressure", fig, run);
+}
+
+void plot_jump(const std::string& folder, const BilateralLevel& level, const std::string& title,
+               bool run) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "[u_h.n] = u^2_y - u^1_y [m]";
+  fig.key = "top right";
+  fig.series.push_back(curve_series(level.jump, "jump at the merged-grid nodes (exact: 0)", "linespoints",
+                                    "pt 7 ps 0.6 lc rgb '#d62728'"));
+  write_figure(folder, "jump", fig, run);
+}
+
+void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise,
+                     const PatchTestResult& integral, bool run) {
+  Figure fig;
+  fig.title = "patch test, h2/h1 = 3/7: sigma_{22} in the triangles along Gamma_c (exact: -p)";
+  fig.xlabel = "x of the triangle's centroid [m]";
+  fig.ylabel = "sigma_{22} / p [-]";
+  fig.key = "outside right top";
+  fig.width = 1200;
+  fig.series.push_back(curve_series(pointwise.sigma22_body1, "pointwise matching, body 1", "linespoints", "pt 6 lc rgb '#d62728'"));
+  fig.series.push_back(curve_series(pointwise.sigma22_body2, "pointwise matching, body 2", "linespoints", "pt 4 lc rgb '#ff7f0e'"));
+  fig.series.push_back(curve_series(integral.sigma22_body1, "integral matching, body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));
+  fig.series.push_back(curve_series(integral.sigma22_body2, "integral matching, body 2", "linespoints", "pt 5 lw 2 lc rgb '#17becf'"));
+  write_figure(folder, "patch_test", fig, run);
+}
+
+}  // namespace mortar

@@ -1,0 +1,157 @@
+#include "common/study/plot.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace mortar {
+
+namespace {
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else out += c;
+  }
+  return out;
+}
+
+void write_data(const std::string& path, const Figure& fig) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f.precision(12);
+  f << "# " << fig.title << "\n# columns: " << fig.xlabel << ", " << fig.ylabel
+    << "\n# one block per series (gnuplot 'index')\n";
+  for (std::size_t s = 0; s < fig.series.size(); ++s) {
+    f << "# series " << s << ": " << fig.series[s].title << "\n";
+    const auto& x = fig.series[s].x;
+    const auto& y = fig.series[s].y;
+    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
+      if (std::isnan(x[i])) f << "\n";
+      else f << x[i] << " " << y[i] << "\n";
+    }
+    f << "\n\n";
+  }
+}
+
+// Runs "gnuplot script" inside folder (the script names its files relative to it), without a
+// shell, so no folder name needs quoting.
+bool run_in_folder(const std::string& folder, const std::string& script) {
+  const pid_t pid = fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    if (chdir(folder.c_str()) != 0) _exit(127);
+    execlp(MORTAR_GNUPLOT, MORTAR_GNUPLOT, script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
+std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size_t k) {
+  if (r.anchor < 0 || r.anchor >= static_cast<int>(fig.series.size()))
+    throw std::invalid_argument("reference slope anchored to a missing series");
+  const auto& s = fig.series[r.anchor];
+  double x0 = std::numeric_limits<double>::infinity(), y0 = 0;
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    if (s.x[i] > 0 && s.x[i] < x0 && s.y[i] > 0) {
+      x0 = s.x[i];
+      y0 = s.y[i];
+    }
+  if (!std::isfinite(x0)) throw std::invalid_argument("reference slope: anchor series has no positive point");
+  std::ostringstream f;
+  f.precision(12);
+  f << "ref" << k << "(x) = " << (1 - r.offset) * y0 / std::pow(x0, r.slope) << " * x**("
+    << r.slope << ")\n";
+  return f.str();
+}
+}  // namespace
+
+void write_figure(const std::string& folder, const std::string& name, const Figure& fig,
+                  bool run_gnuplot) {
+  namespace fs = std::filesystem;
+  write_data((fs::path(folder) / (name + ".dat")).string(), fig);
+
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size " << fig.width << "," << fig.height
+     << " enhanced font 'DejaVu Sans,12'\n"
+     << "set output '" << name << ".png'\n"
+     << "set title '" << escape(fig.title) << "'\n"
+     << "set xlabel '" << escape(fig.xlabel) << "'\n"
+     << "set ylabel '" << escape(fig.ylabel) << "'\n"
+     << "set key " << fig.key << " box opaque\n"
+     << "set grid\n";
+  if (fig.log_x) gp << "set logscale x\nset format x '10^{%L}'\n";
+  if (fig.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
+  if (fig.equal_axes) gp << "set size ratio -1\n";
+  for (std::size_t k = 0; k < fig.slopes.size(); ++k) gp << slope_function(fig, fig.slopes[k], k);
+  gp << "plot ";
+  for (std::size_t s = 0; s < fig.series.size(); ++s) {
+    const Series& ser = fig.series[s];
+    gp << (s ? ", \\\n     " : "") << "'" << name << ".dat' index " << s << " using 1:2 with "
+       << ser.style << " " << ser.extra << " title '" << escape(ser.title) << "'";
+  }
+  for (std::size_t k = 0; k < fig.slopes.size(); ++k) {
+    const auto& r = fig.slopes[k];
+    std::ostringstream label;
+    label << (r.label.empty() ? "slope " : r.label);
+    if (r.label.empty()) label << r.slope;
+    gp << ", \\\n     ref" << k << "(x) with lines " << (r.style.empty() ? "dt 2 lw 2 lc rgb '#555555'" : r.style) << " title '"
+       << escape(label.str()) << "'";
+  }
+  gp << "\n";
+  const fs::path script = fs::path(folder) / (name + ".gp");
+  {
+    std::ofstream f(script);
+    if (!f) throw std::runtime_error("cannot write " + script.string());
+    f << gp.str();
+  }
+  const fs::path png = fs::path(folder) / (name + ".png");
+  std::error_code ignored;
+  fs::remove(png, ignored);  // never leave a figure from an earlier run beside new data
+  if (!run_gnuplot) return;
+  if (!run_in_folder(folder, name + ".gp"))
+    throw std::runtime_error("gnuplot (" MORTAR_GNUPLOT ") failed on " + script.string());
+}
+
+Figure error_against_time(const std::string& title, const std::string& time_label,
+                          const std::string& error_label, const TimedErrors& d) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = time_label;
+  fig.ylabel = error_label;
+  fig.log_x = fig.log_y = true;
+  fig.key = "top right";
+  fig.series.push_back({d.program_label, d.time_s, d.error, "linespoints", "pt 7 lw 2"});
+  fig.series.push_back({d.limit_label, d.limit_s, d.error, "linespoints", "pt 4 lw 1 dt 3"});
+  return fig;
+}
+
+Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra) {
+  Series s;
+  s.title = title;
+  s.style = "lines";
+  s.extra = extra;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k <= 3; ++k) {
+      s.x.push_back(mesh.nodes[t[k % 3]].x());
+      s.y.push_back(mesh.nodes[t[k % 3]].y());
+    }
+    s.x.push_back(nan);
+    s.y.push_back(nan);
+  }
+  return s;
+}
+
+}  // namespace mortar

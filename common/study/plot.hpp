@@ -1,0 +1,57 @@
+// Figures through gnuplot: a program writes <name>.dat (with a '#' header naming columns and
+// units) and <name>.gp, then runs gnuplot to make <name>.png in the same folder, so a
+// lecturer can restyle any figure by editing its script.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/fem/mesh.hpp"
+
+namespace mortar {
+
+struct Series {
+  std::string title;
+  std::vector<double> x, y;      // a NaN in x breaks the line (used to draw mesh edges)
+  std::string style = "linespoints";  // gnuplot "with": lines, points, linespoints, steps
+  std::string extra;             // more gnuplot style, e.g. "dt 2 lw 2" or "lc rgb '#888888'"
+};
+
+// A dashed line C h^slope through the finest (smallest x) point of series `anchor`, shifted
+// down by `offset` so it does not hide the data.
+struct ReferenceSlope {
+  double slope = 1;
+  int anchor = 0;
+  double offset = 0.5;
+  std::string label;  // default "slope p"
+  std::string style;  // gnuplot line style; default dashed grey "dt 2 lw 2 lc rgb '#555555'"
+};
+
+struct Figure {
+  std::string title, xlabel, ylabel;
+  bool log_x = false, log_y = false;
+  bool equal_axes = false;  // same scale on both axes (meshes)
+  std::string key = "top left";
+  int width = 900, height = 650;
+  std::vector<Series> series;
+  std::vector<ReferenceSlope> slopes;
+};
+
+// Writes name.dat and name.gp into folder and, when run_gnuplot, runs gnuplot to make
+// name.png; throws std::runtime_error if gnuplot fails.
+void write_figure(const std::string& folder, const std::string& name, const Figure& figure,
+                  bool run_gnuplot);
+
+// Error against wall time for a program and for the physical limit of the same levels (the
+// floor every chapter compares itself with).
+struct TimedErrors {
+  std::vector<double> error, time_s, limit_s;
+  std::string program_label, limit_label;
+};
+Figure error_against_time(const std::string& title, const std::string& time_label,
+                          const std::string& error_label, const TimedErrors& data);
+
+// The edges of a mesh as one Series (each triangle's outline; shared edges drawn twice).
+Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra = "");
+
+}  // namespace mortar
