@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# One run of a chapter program, checked for what every run must keep (DESIGN.md, output
-# contract): the expected exit status, no sanitizer report, nothing written after a refusal,
+# One run of a chapter program, checked for what every run must keep (README.md, "Output
+# contract"): the expected exit status, no sanitizer report, nothing written after a refusal,
 # and no NaN or inf in any CSV or JSON written.
 #
 #   check_program_run.sh STATUS OUT_DIR PROGRAM [ARGS...]    (the program also gets --out OUT_DIR)

@@ -1,4 +1,4 @@
-// The scenes of chapter 5 (DESIGN.md conventions). Each gives the loads, the Dirichlet data
+// The scenes of chapter 5 (README.md, "Notation"). Each gives the loads, the Dirichlet data
 // and the initial gap g(x) >= 0 on Gamma_c; the constraint is [u.n] <= g.
 //  - hertz: top of body 1 moved by (0, -delta), bottom of body 2 clamped, lateral sides free,
 //    g = (x - L/2)^2 / (2R): a cylinder-like contact whose zone grows with delta;

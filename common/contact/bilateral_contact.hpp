@@ -26,8 +26,9 @@ struct BilateralSolution {
 BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scene,
                                   const BilateralOptions& options);
 
-// The physical limit of a two-body level (DESIGN.md): assemble K of both bodies, eliminate the
-// Dirichlet dofs, one Cholesky factorization and one solve; the scene must hold each body.
+// The physical limit of a two-body level (README.md, "Speed"): assemble K of both bodies,
+// eliminate the Dirichlet dofs, one Cholesky factorization and one solve; the scene must
+// hold each body.
 double two_body_limit(const TwoBodies& bodies, const SceneData& scene);
 
 }  // namespace mortar

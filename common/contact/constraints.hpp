@@ -1,5 +1,5 @@
 // The discrete contact conditions on Gamma_c as rows of a matrix B acting on the global
-// displacement vector of both bodies (paper section 3; DESIGN.md):
+// displacement vector of both bodies (paper section 3; README.md, "Notation"):
 //  - pointwise matching (space V_h^P), one row per node a of the non-mortar trace:
 //      (B u)_a = [u_h.n](a) = u_nm(a).n_nm + sum_k phi^m_k(a) u_m,k.n_m;
 //  - integral matching (space V_h^I), one row per multiplier psi_i of M_h:

@@ -1,4 +1,4 @@
-// Loads and Dirichlet data of the two-body scenes of chapters 3 and 4 (DESIGN.md).
+// Loads and Dirichlet data of the two-body scenes of chapters 3 and 4 (chapter 3 notes).
 #pragma once
 
 #include <Eigen/Dense>

@@ -1,5 +1,5 @@
-// Exact solutions of frictionless contact between two different materials (DESIGN.md), for
-// convergence studies. On body l (l = 1 upper, 2 lower), for an x-profile (v, w = v', c):
+// Exact solutions of frictionless contact between two different materials (chapter 3 notes),
+// for convergence studies. On body l (l = 1 upper, 2 lower), for an x-profile (v, w = v', c):
 //
 //   u^l = ( alpha_l cos(y) v(x) - y c'(x),  beta_l sin(y) w(x) + c(x) ),    times A.
 //

@@ -1,6 +1,6 @@
-// Two bodies in plane strain meeting along Gamma_c = (0, L) x {0} (DESIGN.md): body 1 above,
-// Omega1 = (0, L) x (0, H1), body 2 below, Omega2 = (0, L) x (-H2, 0). One global unknown
-// vector holds both: body 1's dofs first, then body 2's.
+// Two bodies in plane strain meeting along Gamma_c = (0, L) x {0} (README.md, "Notation"):
+// body 1 above, Omega1 = (0, L) x (0, H1), body 2 below, Omega2 = (0, L) x (-H2, 0). One
+// global unknown vector holds both: body 1's dofs first, then body 2's.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
-// The contact pressure measured in its own norms (paper section 4; DESIGN.md "Verification
-// standards"). Theorem 4.2 with the inf-sup condition bounds the multiplier error in
+// The contact pressure measured in its own norms (paper section 4; chapter 4's notes,
+// "What we observe"). Theorem 4.2 with the inf-sup condition bounds the multiplier error in
 // H^{-1/2}(Gamma_c) by O(h); in L2 only O(h^{1/2}) follows, through an inverse inequality. So
 // a pressure error is reported
 //  - in L2(Gamma_c), whole and split into the interior and the two end elements of the

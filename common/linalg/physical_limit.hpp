@@ -1,6 +1,7 @@
-// The physical limit of one level (DESIGN.md): assembling K plus one factorization and one
-// solve of K with the fastest sparse Cholesky available, timed in the same run on the same
-// matrix, with no coupling and no iteration. Programs report their own time as a ratio to it.
+// The physical limit of one level (README.md, "Speed"): assembling K plus one factorization
+// and one solve of K with the fastest sparse Cholesky available, timed in the same run on the
+// same matrix, with no coupling and no iteration. Programs report their own time as a ratio
+// to it.
 #pragma once
 
 #include <functional>

@@ -1,5 +1,5 @@
 // A convergence study: one row per refinement level, printed as it finishes, then
-// convergence.csv and summary.json exactly as DESIGN.md fixes them.
+// convergence.csv and summary.json exactly as README.md's "Output contract" fixes them.
 //
 // Rates are least-squares slopes of log(err) against log(h) over the three finest levels
 // (GSL's gsl_fit_linear), so a rate of 2 means the error falls by 4 when h halves.
