@@ -10,8 +10,10 @@ set -euo pipefail
 out=${1:?usage: bash exercises/pristine_skeletons.sh OUT_DIR}
 cd "$(dirname "$0")/.."
 
+# The history must be this tree's own: a tarball unpacked inside another repository has none.
 have_history=false
-if command -v git > /dev/null && git rev-parse --verify --quiet HEAD > /dev/null 2>&1; then
+if command -v git > /dev/null && git rev-parse --verify --quiet HEAD > /dev/null 2>&1 &&
+   [ "$(git rev-parse --show-toplevel)" = "$(pwd -P)" ]; then
   have_history=true
 fi
 if $have_history; then
