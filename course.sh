@@ -145,9 +145,13 @@ run_tests() {
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
   step "sanitizer build" cmake --build build-sanitize -j "$jobs" --target unit_tests sanitized_programs
   step "sanitized unit tests" ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L unit
-  step "sanitized program runs and fuzzing" \
-    ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L sanitized_programs
-  echo "fuzzed command lines: $(cat build-sanitize/tests/fuzz_runs/*.counts | tr '\n' ' ')"
+  step "sanitized program runs and fuzzing" sanitized_program_runs
+}
+
+# The programs under the sanitizers; the log ends with how the fuzzed command lines fared.
+sanitized_program_runs() {
+  ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L sanitized_programs
+  cat build-sanitize/tests/fuzz_runs/*.counts
 }
 
 # The fallback tree needs the library, the two solver tests and chapter 2 only. test_programs
