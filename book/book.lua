@@ -181,9 +181,16 @@ local function latex_table(tbl)
   return tbl
 end
 
+-- second pass, LaTeX: program output and commands in a smaller font, long lines broken and
+-- marked (fvextra's Verbatim, book/header.tex) rather than running off the page
+local function latex_code_block(block)
+  return pandoc.RawBlock("latex", "\\begin{Verbatim}[breaklines,breakanywhere,fontsize=\\small]\n"
+    .. block.text .. "\n\\end{Verbatim}")
+end
+
 if FORMAT:match("latex") then
   -- the tables first: they measure the code names before these become raw LaTeX
-  return { { Table = latex_table }, { Image = latex_image, Code = latex_code } }
+  return { { Table = latex_table }, { Image = latex_image, Code = latex_code, CodeBlock = latex_code_block } }
 end
 if FORMAT:match("markdown") then
   return {

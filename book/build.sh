@@ -63,7 +63,7 @@ pandoc "${common[@]}" -t html5 --wrap=none --mathml --self-contained --css book/
   -o "$out/course.html" "$work"/*.md
 
 pandoc "${common[@]}" -t latex --pdf-engine=xelatex --top-level-division=chapter \
-  --include-in-header book/header.tex -V documentclass=report -V fontsize=10pt \
+  --include-in-header book/header.tex -V documentclass=report -V fontsize=10pt -V papersize=a4 \
   -V geometry:margin=2.2cm -V colorlinks=true -V mainfont="DejaVu Serif" \
   -V sansfont="DejaVu Sans" -V monofont="DejaVu Sans Mono" \
   -o "$out/course.pdf" "$work"/*.md

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The course book builds (book/build.sh) into OUT_DIR and holds the whole course: every
 # chapter's title, every figure under figures/ (embedded, named in its data-file attribute),
-# no formula left as TeX, no figure a note shows that figures/ lacks, and at least MIN_PAGES
-# pages of PDF. Status 77 (ctest: skipped) when pandoc, XeLaTeX or pdfinfo is missing.
+# no formula left as TeX, no figure a note shows that figures/ lacks, no link that leaves the
+# book or misses its anchor, and at least MIN_PAGES pages of PDF. Status 77 (ctest: skipped)
+# when pandoc, XeLaTeX or pdfinfo is missing.
 #
 #   test_book.sh SOURCE_DIR OUT_DIR MIN_PAGES
 set -uo pipefail
@@ -51,6 +52,14 @@ done < <(cd "$source_dir" && find figures -name '*.png' | LC_ALL=C sort)
 if grep -q 'not generated yet' "$html"; then
   grep -o '\[figure [^]]* not generated yet\]' "$html" | sort -u
   fail "a note shows a figure that figures/ does not have"
+fi
+# every link between notes became an anchor inside the book, and each anchor exists
+while read -r anchor; do
+  grep -qF "id=\"$anchor\"" "$html" || fail "link to #$anchor, which the book does not have"
+done < <(grep -oE 'href="#[^"]*"' "$html" | sed 's/^href="#//; s/"$//' | sort -u)
+if grep -qE 'href="[^"#][^":]*"' "$html"; then
+  grep -oE 'href="[^"#][^":]*"' "$html" | sort -u
+  fail "links to files, which the book does not carry"
 fi
 pages=$(pdfinfo "$pdf" | sed -n 's/^Pages: *//p')
 echo "course.pdf: $pages pages, course.html: $(du -k "$html" | cut -f1) kB"
