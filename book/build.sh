@@ -56,7 +56,7 @@ appendix=$work/99_all_figures.md
 
 title=$(sed -n '1s/^# //p' README.md)
 common=(-f "$reader" --toc --toc-depth=2 --lua-filter book/book.lua
-        --resource-path="$root" -M "title=$title"
+        --resource-path="$root" -M lang=en -M "title=$title"
         -M "subtitle=After F. Ben Belgacem, P. Hild and P. Laborde, The mortar finite element method for contact problems (1998)")
 
 pandoc "${common[@]}" -t html5 --wrap=none --mathml --self-contained --css book/book.css \
