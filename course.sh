@@ -1,20 +1,62 @@
 #!/usr/bin/env bash
 # Set-up and entry point of the course on Debian 12 (as root, so missing packages install).
 #
-#   bash course.sh run    install what is missing, build, run every chapter, refresh figures/
+#   bash course.sh run    install what is missing, build the programs, run every chapter, refresh figures/
 #   bash course.sh test   install what is missing, build, run the test suite
+#   bash course.sh book   install what is missing, write the course book to book/course.html and book/course.pdf
+#
+# Each step prints one line; its output goes to build/logs/COMMAND/NN_step.log, shown (the last
+# 60 lines) only when the step fails. The time of every step, and the total, close the run.
 set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(g++ cmake make libeigen3-dev libgsl-dev gnuplot-nox fonts-dejavu-core
           libsuitesparse-dev libopenblas0-pthread googletest libgtest-dev libgmock-dev)
+# The book (and its test): pandoc, XeLaTeX for the PDF, pdfinfo to count its pages.
+book_packages=(pandoc texlive-xetex texlive-latex-recommended texlive-fonts-recommended lmodern
+               fonts-dejavu-core poppler-utils)
 chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
           ch05_unilateral_uzawa)
 jobs=$(nproc 2>/dev/null || echo 2)
+logs=build/logs/${1:-none}
+step_count=0
+step_times=()
+
+# step LABEL COMMAND...: runs COMMAND with its output in a log file; on failure shows the
+# log's tail and stops the whole command with COMMAND's status.
+step() {
+  local label=$1
+  shift
+  step_count=$((step_count + 1))
+  mkdir -p "$logs"
+  local log
+  log=$logs/$(printf '%02d' "$step_count")_$(echo "$label" | tr -cs 'A-Za-z0-9' '_' | sed 's/_$//').log
+  echo "$label"
+  [ "$step_count" -gt 1 ] || rm -f "$logs"/*.log
+  local start=$SECONDS status=0
+  # Not "cmd || status=$?": bash would then ignore set -e inside COMMAND's functions.
+  set +e
+  (set -e; "$@") > "$log" 2>&1
+  status=$?
+  set -e
+  step_times+=("$(printf '%6d s  %s' $((SECONDS - start)) "$label")")
+  if [ "$status" -ne 0 ]; then
+    echo "course.sh: step failed (status $status): $label" >&2
+    tail -n 60 "$log" >&2
+    echo "course.sh: full log: $log" >&2
+    exit "$status"
+  fi
+}
+
+print_times() {
+  echo "time per step:"
+  printf '%s\n' "${step_times[@]}"
+  printf '%6d s  total\n' "$SECONDS"
+}
 
 install_missing() {
   local missing=()
-  for p in "${packages[@]}"; do
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -22,93 +64,113 @@ install_missing() {
     echo "course.sh: missing Debian packages: ${missing[*]}; run as root to install them" >&2
     exit 1
   fi
-  echo "Installing: ${missing[*]}"
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  step "installing missing packages: ${missing[*]}" apt_install "${missing[@]}"
 }
 
-build() {
-  # $1: build folder, then extra CMake arguments
-  local dir=$1
-  shift
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" > /dev/null
-  cmake --build "$dir" -j "$jobs"
+apt_install() {
+  # another apt may hold the lock for a while: wait for it rather than fail
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+    -o DPkg::Lock::Timeout=600 "$@"
 }
 
 configure() {
   # $1: build folder, then extra CMake arguments; the caller builds only what it needs
   local dir=$1
   shift
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" > /dev/null
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@"
 }
 
-# Further scenes shown in the lecture notes: "program|folder under figures/program|options"
+# Further scenes shown in the lecture notes: "program|folder under figures/program|options|label"
 # Chapter 3 at h2/h1 = 1/3, where Theorem 4.1's h^{1/2} shows (about 45 s, 1.5M dofs at the end).
 # Chapter 1's square-root edge over 12 levels (about 25 s).
 # Chapter 5's exact unilateral solution, Theorem 5.1 measured (about 100 s with the solver comparison).
-extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12"
-            "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7"
-            "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare"
-            "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare"
-            "ch05_unilateral_uzawa|signorini|--scene signorini")
+extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
+            "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
+            "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"
+            "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare|chapter 5, scene bilateral"
+            "ch05_unilateral_uzawa|signorini|--scene signorini|chapter 5, scene signorini")
+
+# run_program PROGRAM RESULTS FIGURES [OPTIONS...]: the full output stays in RESULTS; the
+# figures (PNG, and PDF when the program writes them) go to FIGURES, the .vtu files do not.
+run_program() {
+  local program=$1 results=$2 figures=$3
+  shift 3
+  "./build/$program" "$@" --out "$results"
+  mkdir -p "$figures"
+  local figure
+  for figure in "$results"/*.png "$results"/*.pdf; do
+    [ -e "$figure" ] && cp "$figure" "$figures/"
+  done
+  return 0
+}
 
 run_course() {
-  build build
+  # build/ is also the test command's tree: building only the programs here (not the test and
+  # exercise executables) costs what a separate tree without tests would, and the test
+  # command then finds the library and the programs already built.
+  step "configuring build/" configure build
+  step "building the programs" cmake --build build -j "$jobs" --target "${chapters[@]}"
   for program in "${chapters[@]}"; do
-    echo "== $program"
-    "./build/$program" --out "results/$program"
-    mkdir -p "figures/$program"
-    rm -rf "figures/$program"/*
-    cp "results/$program"/*.png "figures/$program/"
+    rm -rf "figures/${program:?}"
+    step "running chapter ${program:3:1} ($program)" run_program "$program" "results/$program" "figures/$program"
   done
   for run in "${extra_runs[@]}"; do
-    IFS='|' read -r program name options <<< "$run"
-    echo "== $program $options"
+    IFS='|' read -r program name options label <<< "$run"
     # shellcheck disable=SC2086
-    "./build/$program" $options --out "results/${program}_$name"
-    mkdir -p "figures/$program/$name"
-    cp "results/${program}_$name"/*.png "figures/$program/$name/"
+    step "running $label" run_program "$program" "results/${program}_$name" "figures/$program/$name" $options
   done
-  echo "Figures refreshed in figures/, full output in results/."
+  echo "figures refreshed in figures/, full output in results/, logs in $logs/"
 }
 
 run_tests() {
-  build build
-  ctest --test-dir build --output-on-failure -j "$jobs"
-  # The readable fallback: the same solver tests in a build without CHOLMOD.
-  configure build-fallback -DMORTAR_USE_CHOLMOD=OFF
-  cmake --build build-fallback -j "$jobs" --target test_spd_solver test_dirichlet test_programs
-  ctest --test-dir build-fallback --output-on-failure -j "$jobs" -R 'SpdSolver|Dirichlet|Programs.ch02'
-  check_skeletons_fail
+  # The exercise skeletons as committed, whatever a student did to them in place: each must
+  # fail its test (ctest label "skeletons"), while the solutions pass theirs.
+  step "taking the committed exercise skeletons" bash exercises/pristine_skeletons.sh build/pristine_skeletons
+  step "configuring build/" configure build -DMORTAR_PRISTINE_SKELETONS="$PWD/build/pristine_skeletons"
+  step "building the library, programs, tests and exercises" cmake --build build -j "$jobs"
+  step "unit, program, exercise, skeleton and book tests" \
+    ctest --test-dir build --output-on-failure -j "$jobs"
+  # The readable fallback: the same solver tests, and chapter 2's runs, without CHOLMOD.
+  step "configuring build-fallback/ (without CHOLMOD)" configure build-fallback -DMORTAR_USE_CHOLMOD=OFF
+  step "building the fallback solver tests and chapter 2" build_fallback
+  step "fallback solver tests" \
+    ctest --test-dir build-fallback --output-on-failure -j "$jobs" -R 'SpdSolver|Dirichlet|Programs.ch02'
   # The unit tests once more under AddressSanitizer and UndefinedBehaviorSanitizer, then the
   # programs built the same way: their --quick studies, the hard cases and the fuzzed command lines.
-  configure build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORTAR_SANITIZE=ON
-  cmake --build build-sanitize -j "$jobs" --target unit_tests sanitized_programs
-  ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L unit
+  # -O1 -g1 (line tables only): the sanitizers' reports keep their file:line stacks, and the
+  # tree compiles in about half the time of the default -O2 -g.
+  step "configuring build-sanitize/" \
+    configure build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORTAR_SANITIZE=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+  step "sanitizer build" cmake --build build-sanitize -j "$jobs" --target unit_tests sanitized_programs
+  step "sanitized unit tests" ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L unit
+  step "sanitized program runs and fuzzing" sanitized_program_runs
+}
+
+# The programs under the sanitizers; the log ends with how the fuzzed command lines fared.
+sanitized_program_runs() {
   ctest --test-dir build-sanitize --output-on-failure -j "$jobs" -L sanitized_programs
   cat build-sanitize/tests/fuzz_runs/*.counts
 }
 
-# Every untouched exercise skeleton must fail its test (the solutions pass in the main run).
-check_skeletons_fail() {
-  configure build-skeleton -DMORTAR_EXERCISES=skeleton
-  cmake --build build-skeleton -j "$jobs" --target exercises
-  local bad=0
-  for folder in exercises/[0-9][0-9]_*/; do
-    local name
-    name=$(basename "$folder")
-    if ctest --test-dir build-skeleton -L exercises -R "^${name}\." > /dev/null 2>&1; then
-      echo "exercise $name: the untouched skeleton passes its test" >&2
-      bad=1
-    else
-      echo "exercise $name: the untouched skeleton fails its test, as it should"
-    fi
-  done
-  return $bad
+# The fallback tree needs the library, the two solver tests and chapter 2 only. test_programs
+# holds every program test and so depends on all five programs; "/fast" builds it alone
+# (the Makefile generator's target without its dependencies) since only chapter 2 runs here.
+build_fallback() {
+  cmake --build build-fallback -j "$jobs" --target test_spd_solver test_dirichlet ch02_p1_triangles
+  cmake --build build-fallback -j "$jobs" --target test_programs/fast
+}
+
+make_book() {
+  step "writing the course book" bash book/build.sh book
+  echo "book: book/course.html, book/course.pdf"
 }
 
 case "${1:-}" in
-  run) install_missing; run_course ;;
-  test) install_missing; run_tests ;;
-  *) echo "usage: bash course.sh run|test" >&2; exit 2 ;;
+  run) install_missing "${packages[@]}"; run_course ;;
+  test) install_missing "${packages[@]}" "${book_packages[@]}" git; run_tests ;;
+  book) install_missing "${book_packages[@]}"; make_book ;;
+  *) echo "usage: bash course.sh run|test|book" >&2; exit 2 ;;
 esac
+print_times
