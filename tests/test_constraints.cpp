@@ -83,3 +83,24 @@ TEST(Constraints, pivots_are_the_non_mortar_normal_dofs) {
     }
   }
 }
+
+TEST(Constraints, the_rows_of_each_matching_are_the_mortar_matrices_or_the_nodal_interpolation) {
+  // The steps chapters 3 and 4 take one by one give the same B as build_constraints.
+  const TwoBodies b = bodies_with(6, 9, 0.25);
+  for (int nonmortar : {0, 1}) {
+    const ContactInterface g = make_interface(b, nonmortar);
+    const MatchingRows integral = integral_matching_rows(g);
+    EXPECT_EQ((Eigen::MatrixXd(integral.nonmortar) - Eigen::MatrixXd(g.matrices.D)).norm(), 0.0);
+    EXPECT_EQ((Eigen::MatrixXd(integral.mortar) - Eigen::MatrixXd(g.matrices.M)).norm(), 0.0);
+    const MatchingRows point = pointwise_matching_rows(contact_traces(b, nonmortar));
+    ASSERT_EQ(point.nonmortar.rows(), g.nonmortar_trace.num_nodes());
+    for (int a = 0; a < point.mortar.rows(); ++a)  // interpolation weights: two per row, sum 1
+      EXPECT_NEAR(Eigen::MatrixXd(point.mortar).row(a).sum(), 1.0, 1e-15);
+    for (Matching m : {Matching::pointwise, Matching::integral}) {
+      const Constraints whole = build_constraints(b, g, m, nothing_prescribed(b));
+      const Constraints steps =
+          constraint_rows(b, g, m, m == Matching::integral ? integral : point, nothing_prescribed(b));
+      EXPECT_EQ((Eigen::MatrixXd(whole.B) - Eigen::MatrixXd(steps.B)).norm(), 0.0) << matching_name(m);
+    }
+  }
+}

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "level.hpp"
 #include "common/study/bilateral_study.hpp"
 #include "common/study/contact_plots.hpp"
 
@@ -30,8 +31,10 @@ int main(int argc, char** argv) {
     // 2. The exact two-material solution: the bodies slide on each other, stay glued in y.
     const mortar::ManufacturedContact exact = mortar::manufactured_solution(o);
 
-    // 3. Refine both meshes together with h2/h1 fixed, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::pointwise);
+    // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
+    //    level.cpp, then the patch test (h2/h1 = 3/7).
+    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::pointwise,
+                                                                     chapter03::solve_pointwise_matching);
 
     // 4. What Theorem 4.1 says, next to what we see.
     mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::pointwise);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "level.hpp"
 #include "common/study/bilateral_study.hpp"
 #include "common/study/contact_plots.hpp"
 
@@ -31,8 +32,10 @@ int main(int argc, char** argv) {
     //    --pressure-ends picks sigma_N' != 0 (sloped) or = 0 (flat) at the ends of Gamma_c.
     const mortar::ManufacturedContact exact = mortar::manufactured_solution(o);
 
-    // 3. Refine both meshes together with h2/h1 fixed, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::integral);
+    // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
+    //    level.cpp, then the patch test (h2/h1 = 3/7).
+    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::integral,
+                                                                     chapter04::solve_integral_matching);
 
     // 4. What theory says, next to what we see.
     mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::integral);

@@ -26,6 +26,13 @@ struct BilateralSolution {
 BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scene,
                                   const BilateralOptions& options);
 
+// The last step of one bilateral solve, once B is known: assemble K of both bodies, move the
+// Dirichlet dofs into the right-hand side, solve the saddle point [K B^T; B 0] (u, lambda) =
+// (f, 0) on the free dofs and put the prescribed values back into u (all dofs).
+SaddlePointSolution solve_glued_bodies(const TwoBodies& bodies, const SceneData& scene,
+                                       const Constraints& constraints, SaddleSolver solver,
+                                       SpdBackend backend = fastest_spd_backend());
+
 // The physical limit of a two-body level (README.md, "Speed"): assemble K of both bodies,
 // eliminate the Dirichlet dofs, one Cholesky factorization and one solve; the scene must
 // hold each body.

@@ -14,7 +14,7 @@ Matching parse_matching(const std::string& name) {
 
 std::string matching_name(Matching m) { return m == Matching::pointwise ? "pointwise" : "integral"; }
 
-ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol) {
+ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar) {
   if (nonmortar != 0 && nonmortar != 1)
     throw std::invalid_argument("make_interface: the non-mortar body is 0 or 1, got " +
                                 std::to_string(nonmortar));
@@ -24,26 +24,23 @@ ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double m
   const auto side_of = [](int l) { return l == 0 ? Side::bottom : Side::top; };
   g.nonmortar_trace = trace_on_side(bodies.body(nonmortar).mesh, side_of(nonmortar));
   g.mortar_trace = trace_on_side(bodies.body(g.mortar()).mesh, side_of(g.mortar()));
+  return g;
+}
+
+ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol) {
+  ContactInterface g = contact_traces(bodies, nonmortar);
   g.grid = merge_traces(g.nonmortar_trace, g.mortar_trace, merge_tol);
   g.space = end_modified_p1(g.nonmortar_trace);
   g.matrices = mortar_matrices(g.nonmortar_trace, g.mortar_trace, g.grid, g.space);
   return g;
 }
 
-namespace {
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-// Row coefficients on the non-mortar side (C_nm, per trace node) and on the mortar side
-// (C_m), so that (B u)_row = sum_j C_nm(row, j) u_nm,j.n_nm + sum_k C_m(row, k) u_m,k.n_m.
-struct RowCoefficients {
-  RowMatrix nonmortar, mortar;
-  std::vector<int> row_node;
-};
-
-RowCoefficients pointwise_rows(const ContactInterface& g) {
+MatchingRows pointwise_matching_rows(const ContactInterface& g) {
   const int n = g.nonmortar_trace.num_nodes();
   std::vector<Eigen::Triplet<double>> nm, m;
-  RowCoefficients c;
+  MatchingRows c;
   for (int a = 0; a < n; ++a) {
     nm.emplace_back(a, a, 1.0);
     // value of the mortar trace at x_a: its two hats on the element containing x_a
@@ -62,18 +59,22 @@ RowCoefficients pointwise_rows(const ContactInterface& g) {
   return c;
 }
 
-RowCoefficients integral_rows(const ContactInterface& g) {
-  RowCoefficients c{g.matrices.D, g.matrices.M, {}};
+MatchingRows integral_matching_rows(const ContactInterface& g) {
+  MatchingRows c{g.matrices.D, g.matrices.M, {}};
   for (int i = 0; i < g.space.dim(); ++i) c.row_node.push_back(g.space.node_of(i));
   return c;
 }
-}  // namespace
 
 Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g,
                               Matching matching, const std::vector<bool>& prescribed) {
+  const MatchingRows rows = matching == Matching::pointwise ? pointwise_matching_rows(g) : integral_matching_rows(g);
+  return constraint_rows(bodies, g, matching, rows, prescribed);
+}
+
+Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, Matching matching,
+                            const MatchingRows& c, const std::vector<bool>& prescribed) {
   if (static_cast<int>(prescribed.size()) != bodies.num_dofs())
     throw std::invalid_argument("build_constraints: the prescribed mask has the wrong size");
-  const RowCoefficients c = matching == Matching::pointwise ? pointwise_rows(g) : integral_rows(g);
   const int nm = g.nonmortar, m = g.mortar();
   const double n_nm = TwoBodies::normal_y(nm), n_m = TwoBodies::normal_y(m);
 

@@ -35,7 +35,25 @@ struct ContactInterface {
   MortarMatrices matrices;
 };
 
+// Gamma_c seen from both sides: the bottom trace of body 1 and the top trace of body 2, the
+// non-mortar one first. Grid, space and matrices are left empty.
+ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar);
+
+// All of ContactInterface: the traces, their merged grid, M_h^1 (end-modified P1 on the
+// non-mortar trace) and D, M on the merged grid. Chapter 4's level.cpp shows these steps.
 ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol = 1e-12);
+
+// The coefficients of each row of B before the normals and the global dofs are attached:
+// (B u)_row = sum_j nonmortar(row, j) u_nm,j.n_nm + sum_k mortar(row, k) u_m,k.n_m.
+struct MatchingRows {
+  Eigen::SparseMatrix<double, Eigen::RowMajor> nonmortar, mortar;
+  std::vector<int> row_node;  // the non-mortar trace node each row sits on
+};
+// Pointwise matching (V_h^P): one row per node a of the non-mortar trace, the value of the
+// mortar trace at x_a from its two hats on the element containing x_a.
+MatchingRows pointwise_matching_rows(const ContactInterface& gamma);
+// Integral matching (V_h^I): the rows are D and M, one per multiplier psi_i of M_h^1.
+MatchingRows integral_matching_rows(const ContactInterface& gamma);
 
 struct Constraints {
   Matching matching = Matching::integral;
@@ -48,6 +66,9 @@ struct Constraints {
 
 // Builds B and drops rows whose every entry sits on a prescribed (Dirichlet) dof: such a row
 // says nothing about the unknowns and would make the saddle-point matrix singular.
+Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& gamma, Matching matching,
+                            const MatchingRows& rows, const std::vector<bool>& prescribed);
+// constraint_rows of the matching's own rows.
 Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& gamma,
                               Matching matching, const std::vector<bool>& prescribed);
 

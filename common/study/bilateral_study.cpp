@@ -167,12 +167,12 @@ Row BilateralLevel::row() const {
 }
 
 BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
-                                        const BilateralOptions& options) {
+                                        const BilateralOptions& options, const BilateralSolver& solve) {
   TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
   const Stopwatch clock;  // loads, stiffness, constraints, solve: everything but the mesh
   const SceneData scene = manufactured_scene(bodies, exact);
   BilateralLevel r{std::move(bodies), {}, {}, {}};
-  r.solution = solve_bilateral(r.bodies, scene, options);
+  r.solution = solve(r.bodies, scene, options);
   r.time_s = clock.seconds();
   r.limit_s = two_body_limit(r.bodies, scene);
 
@@ -196,7 +196,7 @@ BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const 
   return r;
 }
 
-PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching) {
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching, const BilateralSolver& solve) {
   TwoBodyGeometry g;
   g.L = o.L;
   g.H1 = o.H1;
@@ -209,7 +209,7 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
   const TwoBodies bodies = make_two_bodies(g, Material(o.E1, o.nu1), Material(o.E2, o.nu2));
   const double p = 0.01 * std::min(o.E1, o.E2);
   const SceneData scene = patch_test_scene(bodies, p);
-  const BilateralSolution s = solve_bilateral(bodies, scene, solver_options(o, matching));
+  const BilateralSolution s = solve(bodies, scene, solver_options(o, matching));
 
   PatchTestResult out;
   for (int l = 0; l < 2; ++l) {
@@ -237,16 +237,17 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
 namespace mortar {
 
 BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                                   Matching matching) {
+                                   Matching matching, const BilateralSolver& solve) {
   BilateralStudy study;
   const BilateralOptions solver = solver_options(o, matching);
   for (int level = 0; level < o.levels; ++level) {
     study.finest = std::make_unique<BilateralLevel>(
-        solve_manufactured_level(exact, level_geometry(o, level), solver));
+        solve_manufactured_level(exact, level_geometry(o, level), solver, solve));
     study.table.add(study.finest->row());
   }
-  study.patch_pointwise = run_patch_test(o, Matching::pointwise);
-  study.patch_integral = run_patch_test(o, Matching::integral);
+  const bool own_pointwise = matching == Matching::pointwise;
+  study.patch_pointwise = run_patch_test(o, Matching::pointwise, own_pointwise ? solve : solve_bilateral);
+  study.patch_integral = run_patch_test(o, Matching::integral, own_pointwise ? solve_bilateral : solve);
   return study;
 }
 

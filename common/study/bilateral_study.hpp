@@ -2,6 +2,7 @@
 // a sequence of nonmatching meshes, and the patch test, for one matching at a time.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -70,8 +71,17 @@ struct BilateralLevel {
   Row row() const;
 };
 
+// One bilateral solve on given bodies and loads. Chapters 3 and 4 each write their own, the
+// steps of their matching in order (level.cpp); solve_bilateral is the library's, for any
+// matching.
+using BilateralSolver =
+    std::function<BilateralSolution(const TwoBodies&, const SceneData&, const BilateralOptions&)>;
+
+// One level of the study: the meshes, the manufactured loads, the solve (timed with the loads),
+// the physical limit, then the errors of u, lambda_h and [u_h.n] against the exact solution.
 BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
-                                        const BilateralOptions& options);
+                                        const BilateralOptions& options,
+                                        const BilateralSolver& solve = solve_bilateral);
 
 // The patch test on meshes with h2 / h1 = 3 / 7: max over all triangles of
 // |sigma_22 + p| / p, and sigma_22 in the triangles along Gamma_c for the figure.
@@ -79,10 +89,12 @@ struct PatchTestResult {
   double rel_error = 0;
   InterfaceCurve sigma22_body1, sigma22_body2;  // element centroids' x and sigma_22 / p
 };
-PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching);
+PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching,
+                               const BilateralSolver& solve = solve_bilateral);
 
-// The whole study of one chapter: every level of the manufactured solution (one line each as
-// it finishes), then the patch test with both matchings on the same meshes.
+// The whole study of one chapter: every level of the manufactured solution solved by the
+// chapter's own solve (one line each as it finishes), then the patch test with both matchings
+// on the same meshes, the chapter's matching by the chapter's solve.
 struct BilateralStudy {
   ConvergenceTable table;
   std::unique_ptr<BilateralLevel> finest;
@@ -90,7 +102,7 @@ struct BilateralStudy {
   std::map<std::string, double> rates() const { return table.rates(); }
 };
 BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                                   Matching matching);
+                                   Matching matching, const BilateralSolver& solve);
 
 // convergence.csv and summary.json; results hold the finest level, the patch test of this
 // chapter's matching (patch_test_rel_error) and of the other one.

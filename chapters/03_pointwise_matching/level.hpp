@@ -1,0 +1,14 @@
+// One level of chapter 3: two bodies glued by pointwise matching, step by step.
+#pragma once
+
+#include "common/contact/bilateral_contact.hpp"
+
+namespace chapter03 {
+
+// The bodies are meshed and loaded; every step from Gamma_c to (u_h, lambda_h) is here, in the
+// order of the lecture (README.md, "The program"). options.matching is not read: this chapter
+// always glues at the nodes of the non-mortar side.
+mortar::BilateralSolution solve_pointwise_matching(const mortar::TwoBodies& bodies, const mortar::SceneData& scene,
+                                                   const mortar::BilateralOptions& options);
+
+}  // namespace chapter03
