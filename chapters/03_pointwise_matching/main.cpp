@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
                           "pointwise matching: nodal force / tributary length, finest mesh", run);
     mortar::plot_jump(o.out, finest, "pointwise matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
+    // 6. Pictures of the problem, and the finest level for ParaView.
+    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::pointwise, chapter03::solve_pointwise_matching);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch03_pointwise_matching: error: %s\n", e.what());

@@ -70,6 +70,8 @@ int main(int argc, char** argv) {
     mortar::plot_pressure(o.out, finest, exact, "integral matching: contact pressure lambda_h, finest mesh", run);
     mortar::plot_jump(o.out, finest, "integral matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
+    // 6. Pictures of the problem, and the finest level for ParaView.
+    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::integral, chapter04::solve_integral_matching);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch04_integral_matching: error: %s\n", e.what());

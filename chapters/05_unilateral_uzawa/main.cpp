@@ -15,6 +15,7 @@
 
 #include "common/study/contact_plots.hpp"
 #include "figures.hpp"
+#include "common/study/two_body_pictures.hpp"
 #include "hertz_report.hpp"
 #include "study.hpp"
 
@@ -115,6 +116,20 @@ int main(int argc, char** argv) {
     if (o.scene == "signorini") chapter05::plot_theorem_5_1(o.out, table, o.matching, runs, run);
     if (o.compare)
       chapter05::plot_solver_comparison(o.out, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);
+
+    // 7. Pictures of the problem: the coarsest level's meshes and deformed bodies (solved once
+    //    more, untimed), and the finest level for ParaView.
+    chapter05::UnilateralSetup coarse = chapter05::level_setup(o, 0, matching, solver);
+    coarse.measure_limit = false;
+    const chapter05::UnilateralLevel c = chapter05::solve_unilateral_level(coarse, exact);
+    const std::string name = mortar::matching_name(matching) + " matching, scene " + o.scene;
+    mortar::write_figure(o.out, "meshes",
+                         mortar::two_body_meshes(c.bodies, c.gamma, matching == mortar::Matching::integral,
+                                                 name + ": the coarsest meshes and their traces on Gamma_c"),
+                         run);
+    mortar::write_figure(o.out, "deformed", mortar::deformed_two_bodies(c.bodies, c.u, name + ": coarsest level deformed", c.gap),
+                         run);
+    mortar::write_two_body_vtu(o.out, f.bodies, f.u, f.pressure);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch05_unilateral_uzawa: error: %s\n", e.what());

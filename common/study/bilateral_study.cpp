@@ -7,6 +7,7 @@
 
 #include "common/linalg/memory_estimate.hpp"
 #include "common/study/stopwatch.hpp"
+#include "common/study/two_body_pictures.hpp"
 
 namespace mortar {
 
@@ -276,6 +277,22 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
       .set("saddle_solver", o.saddle_solver);
   study.table.write_csv(o.out + "/convergence.csv");
   write_summary(o.out + "/summary.json", parser, study.rates(), results);
+}
+
+void write_bilateral_pictures(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                              const BilateralStudy& study, Matching matching, const BilateralSolver& solve) {
+  const bool integral = matching == Matching::integral;
+  const std::string name = matching_name(matching) + " matching";
+  const BilateralLevel coarsest = solve_manufactured_level(exact, level_geometry(o, 0), solver_options(o, matching), solve);
+  write_figure(o.out, "meshes",
+               two_body_meshes(coarsest.bodies, coarsest.solution.gamma, integral,
+                               name + ": the two meshes of the coarsest level and their traces on Gamma_c"),
+               !o.no_plot);
+  write_figure(o.out, "deformed",
+               deformed_two_bodies(coarsest.bodies, coarsest.solution.u, name + ": coarsest level deformed"),
+               !o.no_plot);
+  const BilateralLevel& f = *study.finest;
+  write_two_body_vtu(o.out, f.bodies, f.solution.u, f.pressure);
 }
 
 }  // namespace mortar

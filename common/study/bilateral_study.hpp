@@ -109,4 +109,10 @@ BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const Manufac
 void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
                              const BilateralStudy& study, Matching matching);
 
+// Pictures of the problem: meshes.png (the coarsest meshes, exploded, with the nodes xi^1 and
+// xi^2 and, for integral matching, the merged grid) and deformed.png (the coarsest level solved
+// again), then body1.vtu, body2.vtu and contact.vtu of the finest level.
+void write_bilateral_pictures(const BilateralStudyOptions& o, const ManufacturedContact& exact,
+                              const BilateralStudy& study, Matching matching, const BilateralSolver& solve);
+
 }  // namespace mortar
