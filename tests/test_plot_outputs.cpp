@@ -129,3 +129,13 @@ TEST(PlotOutputs, reference_slopes_differ_in_colour_and_dash) {
   EXPECT_EQ(colours.size(), 4u);
   EXPECT_EQ(dashes.size(), 4u);
 }
+
+TEST(PlotOutputs, the_same_figure_drawn_twice_gives_the_same_pdf) {
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot (" MORTAR_GNUPLOT ") not found";
+  const fs::path folder = fresh_folder("twice");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), true);
+  const std::string first = read(folder / "errors.pdf");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), true);
+  EXPECT_EQ(read(folder / "errors.pdf"), first);  // no creation time left in it
+  fs::remove_all(folder);
+}

@@ -127,12 +127,12 @@ void plot_contact_state(const std::string& folder, const UnilateralLevel& r, boo
   const double m_lo = std::min({0.0, lowest(open), lowest(jump)});
   const double umax = r.u.size() ? r.u.cwiseAbs().maxCoeff() : 0.0;
   // the share of each axis below zero: room for the lowest value of both, and for the markers
+  const double m_top = std::max({m_hi, 0.01 * umax, 1e-300});
   double below = 0.12;
   if (p_hi > 0) below = std::max(below, -p_lo / p_hi);
-  if (m_hi > 0) below = std::max(below, -m_lo / m_hi);
-  below = std::min(below, 1.0);
+  below = std::min(std::max(below, -m_lo / m_top), 1.0);
   const double P = std::max({p_hi, -p_lo / below, 1e-300});
-  const double M = std::max({m_hi, -m_lo / below, 0.01 * umax, 1e-300});
+  const double M = std::max(m_top, -m_lo / below);
 
   Figure fig;
   fig.title = "the state of Gamma_c on the finest mesh: pressure (left axis), gap and jump in metres (right axis)";

@@ -134,7 +134,7 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
   const double hi = nonmortar.empty() ? 0.35 * L : nonmortar[last];
 
   Figure fig;
-  fig.title = title + ": whole Gamma_c, one point per merged-grid node (exact jump: 0)";
+  fig.title = title + " (exact: 0)";
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "[u_h.n] = u^2_y - u^1_y [m]";
   fig.key = "top right";
@@ -147,20 +147,20 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
                 lo, hi);
   fig.settings.push_back(window);
   Series points = all;
-  points.title = "[u_h.n] at the merged-grid nodes";
+  points.title = "whole Gamma_c: [u_h.n] at every merged-grid node";
   points.extra = "pt 7 ps 0.5 lc rgb '#d62728'";
   fig.series.push_back(points);
 
   Figure zoom;
   char zoom_title[160];
   std::snprintf(zoom_title, sizeof zoom_title,
-                "zoom on the shaded window, x in [%.4g, %.4g] m: 4 non-mortar elements, lines and points", lo, hi);
+                "zoom on the shaded window: x in [%.4g, %.4g] m, 4 non-mortar elements", lo, hi);
   zoom.title = zoom_title;
   zoom.xlabel = fig.xlabel;
   zoom.ylabel = fig.ylabel;
-  zoom.key = "outside right top";
+  zoom.key = "outside below center horizontal maxrows 1";
   zoom.width = 1000;
-  zoom.height = 430;
+  zoom.height = 480;
   zoom.settings.push_back("set xzeroaxis lt -1");
   zoom.settings.push_back("set offsets 0, 0, graph 0.1, graph 0.1");
   char xrange[96];

@@ -68,6 +68,28 @@ bool run_in_folder(const std::string& folder, const std::string& script) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// cairo stamps the PDF with the time it was made, the only byte a rerun would change: a fixed
+// date of the same length in its place keeps the file (and its cross-reference offsets) as
+// they were, so an unchanged figure stays byte-identical from one run to the next.
+void fix_creation_date(const std::filesystem::path& pdf) {
+  std::string bytes;
+  {
+    std::ifstream in(pdf, std::ios::binary);
+    if (!in) return;
+    std::ostringstream s;
+    s << in.rdbuf();
+    bytes = s.str();
+  }
+  const std::string key = "/CreationDate (";
+  const std::size_t at = bytes.find(key);
+  if (at == std::string::npos) return;
+  const std::size_t begin = at + key.size(), end = bytes.find(')', begin);
+  const std::string fixed = "D:19700101000000Z";
+  if (end == std::string::npos || end - begin != fixed.size()) return;
+  bytes.replace(begin, fixed.size(), fixed);
+  std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;
+}
+
 // C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
 std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size_t k) {
   if (r.anchor < 0 || r.anchor >= static_cast<int>(fig.series.size()))
@@ -180,6 +202,7 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
   if (!run_gnuplot) return;
   if (!run_in_folder(folder, name + ".gp"))
     throw std::runtime_error("gnuplot (" MORTAR_GNUPLOT ") failed on " + script.string());
+  fix_creation_date(fs::path(folder) / (name + ".pdf"));
 }
 
 Figure error_against_time(const std::string& title, const std::string& time_label,
