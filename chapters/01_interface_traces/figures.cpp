@@ -28,14 +28,15 @@ constexpr double floor_value = 1e-17;  // exact zeros cannot sit on a log axis
 void plot_transfers(const std::string& folder, const TransferResult& r, const TraceFunction& w,
                     bool run) {
   Figure fig;
-  char title[256];
-  std::snprintf(title, sizeof title,
-                "%s trace from side 2 (%d elements) to side 1 (%d elements):  "
-                "int w2 = %.5f,  int pointwise = %.5f,  int mortar = %.5f",
-                w.name.c_str(), r.trace2.num_elements(), r.trace1.num_elements(),
-                mortar::integral(r.trace2, r.w2), mortar::integral(r.trace1, r.pointwise),
-                mortar::integral(r.trace1, r.mortar));
+  // the integrals go to the key, beside the curve they belong to: the title stays one short line
+  char title[160], label[96];
+  std::snprintf(title, sizeof title, "%s trace from side 2 (%d elements) to side 1 (%d elements)",
+                w.name.c_str(), r.trace2.num_elements(), r.trace1.num_elements());
   fig.title = title;
+  auto with_integral = [&](const char* what, double value) {
+    std::snprintf(label, sizeof label, "%s, int = %.5f", what, value);
+    return std::string(label);
+  };
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "trace value w [m]";
   fig.key = "outside right top";
@@ -48,11 +49,11 @@ void plot_transfers(const std::string& folder, const TransferResult& r, const Tr
     exact.y.push_back(w.value(x));
   }
   fig.series.push_back(exact);
-  fig.series.push_back({"w2: interpolant on side 2", r.trace2.x, r.w2, "linespoints",
+  fig.series.push_back({with_integral("w2: interpolant on side 2", mortar::integral(r.trace2, r.w2)), r.trace2.x, r.w2, "linespoints",
                         "pt 6 lw 1 lc rgb '#888888'"});
-  fig.series.push_back({"pointwise transfer to side 1", r.trace1.x, r.pointwise, "linespoints",
+  fig.series.push_back({with_integral("pointwise transfer to side 1", mortar::integral(r.trace1, r.pointwise)), r.trace1.x, r.pointwise, "linespoints",
                         "pt 9 ps 1.5 lw 2 lc rgb '#d62728'"});
-  fig.series.push_back({"mortar projection to side 1", r.trace1.x, r.mortar, "linespoints",
+  fig.series.push_back({with_integral("mortar projection to side 1", mortar::integral(r.trace1, r.mortar)), r.trace1.x, r.mortar, "linespoints",
                         "pt 7 ps 1.2 lw 2 lc rgb '#1f77b4'"});
   double lo = std::numeric_limits<double>::infinity();
   for (const auto& s : fig.series) lo = std::min(lo, *std::min_element(s.y.begin(), s.y.end()));
@@ -79,8 +80,14 @@ void plot_error_vs_h(const std::string& folder, const mortar::ConvergenceTable& 
   }
   fig.series.push_back({"mortar, L^2", h, table.column("err_mortar_l2"), "linespoints", "pt 5 lw 2 lc rgb '#17becf'"});
   fig.series.push_back({"pointwise, L^2", h, table.column("err_pointwise_l2"), "linespoints", "pt 4 lw 2 dt 2 lc rgb '#ff7f0e'"});
-  if (has_h1) fig.slopes.push_back({h1_rate, 0, 0.5, "", "dt 2 lw 2 lc rgb '#555555'"});
-  fig.slopes.push_back({l2_rate, has_h1 ? 2 : 0, 0.5, "", "dt 4 lw 2 lc rgb '#555555'"});
+  // each reference slope in its own colour and dash (mortar::reference_slope_style)
+  char label[64];
+  if (has_h1) {
+    std::snprintf(label, sizeof label, "reference slope %g (H^1 seminorm)", h1_rate);
+    fig.slopes.push_back({h1_rate, 0, 0.5, label, ""});
+  }
+  std::snprintf(label, sizeof label, "reference slope %g (L^2)", l2_rate);
+  fig.slopes.push_back({l2_rate, has_h1 ? 2 : 0, 0.5, label, ""});
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 
@@ -102,9 +109,11 @@ void plot_integral_errors(const std::string& folder, const std::vector<IntegralC
   fig.xlabel = "h1, side-1 element length [m]";
   fig.ylabel = "|int w1 - int w2| / |int w2| [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "right center";  // the band between the two families of curves is empty
+  // the key below the axes, never over a curve (every part of the axes holds one)
+  fig.key = "at screen 0.5, screen 0.01 center bottom Left reverse";
+  fig.settings.push_back("set bmargin 11");
   fig.width = 1100;
-  fig.height = 800;
+  fig.height = 950;
   auto clamp = [](std::vector<double> v) {
     for (double& x : v) x = std::max(x, floor_value);
     return v;

@@ -114,26 +114,55 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
 }
 
 void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run) {
+  // The pressure on the left axis [Pa]; the open gap g - [u.n] and the jump [u.n] on the right
+  // axis in metres, as computed (never divided by their own maximum: a round-off gap of 1e-8 m
+  // would look like a penetration). Both axes put zero at the same height; the right axis
+  // spans at least 1% of the largest displacement, so round-off cannot fill it.
+  std::vector<double> open, jump = r.jump.value;
+  for (std::size_t k = 0; k < r.jump.x.size(); ++k) open.push_back(r.gap(r.jump.x[k]) - r.jump.value[k]);
+  auto lowest = [](const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); };
+  auto highest = [](const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); };
+  const double p_hi = std::max(0.0, highest(r.pressure.value)), p_lo = std::min(0.0, lowest(r.pressure.value));
+  const double m_hi = std::max({0.0, highest(open), highest(jump)});
+  const double m_lo = std::min({0.0, lowest(open), lowest(jump)});
+  const double umax = r.u.size() ? r.u.cwiseAbs().maxCoeff() : 0.0;
+  // the share of each axis below zero: room for the lowest value of both, and for the markers
+  const double m_top = std::max({m_hi, 0.01 * umax, 1e-300});
+  double below = 0.12;
+  if (p_hi > 0) below = std::max(below, -p_lo / p_hi);
+  below = std::min(std::max(below, -m_lo / m_top), 1.0);
+  const double P = std::max({p_hi, -p_lo / below, 1e-300});
+  const double M = std::max(m_top, -m_lo / below);
+
   Figure fig;
-  fig.title = "the state of Gamma_c on the finest mesh: where the bodies touch, where they separate";
+  fig.title = "the state of Gamma_c on the finest mesh: pressure (left axis), gap and jump in metres (right axis)";
   fig.xlabel = "x along Gamma_c [m]";
-  fig.ylabel = "scaled by its maximum [-]";
-  fig.key = "outside below maxrows 1";
-  fig.height = 700;
-  const double pmax = std::max(1e-300, *std::max_element(r.pressure.value.begin(), r.pressure.value.end()));
-  Series p{"pressure p / max p", r.pressure.x, {}, "linespoints", "pt 7 ps 0.5 lw 2 lc rgb '#1f77b4'"};
-  for (double v : r.pressure.value) p.y.push_back(v / pmax);
-  Series gap{"open gap (g - [u.n]) / max", r.jump.x, {}, "lines", "lw 2 lc rgb '#d62728'"};
-  double gmax = 1e-300;
-  for (std::size_t k = 0; k < r.jump.x.size(); ++k) gmax = std::max(gmax, r.gap(r.jump.x[k]) - r.jump.value[k]);
-  for (std::size_t k = 0; k < r.jump.x.size(); ++k) gap.y.push_back((r.gap(r.jump.x[k]) - r.jump.value[k]) / gmax);
+  fig.ylabel = "contact pressure p [Pa]";
+  fig.y2label = "open gap g - [u.n], jump [u.n] [m]";
+  fig.key = "outside below maxrows 2";
+  fig.width = 1000;
+  fig.height = 720;
+  char range[160];
+  std::snprintf(range, sizeof range, "set yrange [%.6g:%.6g]", -1.05 * below * P, 1.05 * P);
+  fig.settings.push_back(range);
+  std::snprintf(range, sizeof range, "set y2range [%.6g:%.6g]", -1.05 * below * M, 1.05 * M);
+  fig.settings.push_back(range);
+  fig.settings.push_back("set xzeroaxis lt -1 lw 1.5");  // zero of both axes
+  char label[160];
+  Series p{"pressure p [Pa], left axis", r.pressure.x, r.pressure.value, "linespoints", "pt 7 ps 0.5 lw 2 lc rgb '#1f77b4'"};
+  std::snprintf(label, sizeof label, "open gap g - [u.n] [m], right axis: from %.3g to %.3g", lowest(open), highest(open));
+  Series gap{label, r.jump.x, open, "lines", "lw 2 lc rgb '#d62728'"};
+  gap.right_axis = true;
+  std::snprintf(label, sizeof label, "jump [u.n] = u^2_y - u^1_y [m], right axis: from %.3g to %.3g", lowest(jump), highest(jump));
+  Series jmp{label, r.jump.x, jump, "lines", "lw 1.5 dt (8,4) lc rgb '#ff7f0e'"};
+  jmp.right_axis = true;
   Series zone{"contact set (nodes with p > 0)", {}, {}, "points", "pt 5 ps 0.6 lc rgb '#2ca02c'"};
   for (std::size_t k = 0; k < r.pressure.x.size(); ++k)
     if (r.pressure.value[k] > 0) {
       zone.x.push_back(r.pressure.x[k]);
-      zone.y.push_back(-0.05);
+      zone.y.push_back(-0.5 * below * P);
     }
-  fig.series = {p, gap, zone};
+  fig.series = {p, gap, jmp, zone};
   mortar::write_figure(folder, "contact_state", fig, run);
 }
 
@@ -185,9 +214,9 @@ void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable&
   }
   // Theorem 5.1 bounds the energy error by C (h1^{1/4} + h2); the optimal O(h) is proved
   // later (Hueber-Wohlmuth 2005; Drouet-Hild 2015). Both drawn through the finest point.
-  fig.slopes.push_back({1.0, 0, 0.3, "slope 1 (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)",
-                        "dt 2 lw 2 lc rgb '#2ca02c'"});
-  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1: C (h1^{1/4} + h2))", "dt 4 lw 2 lc rgb '#9467bd'"});
+  // Each in its own colour and dash (mortar::reference_slope_style).
+  fig.slopes.push_back({1.0, 0, 0.3, "slope 1 (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)", ""});
+  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1: C (h1^{1/4} + h2))", ""});
   mortar::write_figure(folder, "theorem_5_1", fig, run);
 }
 

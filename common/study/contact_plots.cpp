@@ -24,8 +24,8 @@ Series curve_series(const InterfaceCurve& c, const std::string& title, const std
   return s;
 }
 
-// One colour per quantity; a best approximation and a reference slope take the colour of the
-// quantity they stand beside.
+// One colour per quantity; a best approximation takes the colour of the quantity it stands
+// beside.
 struct ErrorCurve {
   std::string column, title, marker, colour;
   bool best = false;  // a best approximation in M_h^1: open markers, dotted
@@ -43,11 +43,10 @@ const std::vector<ErrorCurve>& error_curves() {
   return curves;
 }
 
-// C h^p through the anchor's finest point lowered by the offset, over the anchor's h range:
-// dashed, in the anchor's colour, with its label (the theorem that bounds the anchor).
-// Two slopes beside the same quantity share its colour; their dash patterns (dt 2, 4, 5, 6, by
-// the slope's place in the list) tell them apart.
-Series reference_line(const Series& anchor, const std::string& colour, const ReferenceSlope& r, std::size_t k) {
+// C h^p through the anchor's finest point lowered by the offset, over the anchor's h range,
+// with its label (the theorem that bounds the anchor): each slope in its own colour and dash
+// (reference_slope_style, by its place in the list), unlike the data and the other slopes.
+Series reference_line(const Series& anchor, const ReferenceSlope& r, std::size_t k) {
   std::size_t finest = 0, coarsest = 0;
   for (std::size_t i = 0; i < anchor.x.size(); ++i) {
     if (anchor.x[i] < anchor.x[finest]) finest = i;
@@ -56,9 +55,8 @@ Series reference_line(const Series& anchor, const std::string& colour, const Ref
   const double C = (1 - r.offset) * anchor.y[finest] / std::pow(anchor.x[finest], r.slope);
   char fallback[32];
   std::snprintf(fallback, sizeof fallback, "slope %g", r.slope);
-  static const int dash[] = {2, 4, 5, 6};
   Series line{r.label.empty() ? fallback : r.label, {}, {}, "lines",
-              "dt " + std::to_string(dash[k % 4]) + " lw 1.5 lc rgb '" + colour + "'"};
+              r.style.empty() ? reference_slope_style(k) : r.style};
   for (std::size_t i : {finest, coarsest}) {
     line.x.push_back(anchor.x[i]);
     line.y.push_back(C * std::pow(anchor.x[i], r.slope));
@@ -87,7 +85,7 @@ void plot_contact_errors(const std::string& folder, const ConvergenceTable& tabl
     if (r.anchor < 0 || r.anchor >= static_cast<int>(error_curves().size()))
       throw std::invalid_argument("plot_contact_errors: reference slope anchored to series " +
                                   std::to_string(r.anchor) + " of " + std::to_string(error_curves().size()));
-    fig.series.push_back(reference_line(fig.series[r.anchor], error_curves()[r.anchor].colour, r, k));
+    fig.series.push_back(reference_line(fig.series[r.anchor], r, k));
   }
   write_figure(folder, "error_vs_h", fig, run);
 }
@@ -122,13 +120,66 @@ void plot_pressure(const std::string& folder, const BilateralLevel& level,
 
 void plot_jump(const std::string& folder, const BilateralLevel& level, const std::string& title,
                bool run) {
+  // Top: the whole of Gamma_c, one point per merged-grid node (a line through them would fill
+  // the panel: the jump changes sign or drops to zero from one node to the next). Bottom: a
+  // window of four non-mortar elements, where lines and points show the jump between nodes.
+  const Series all = curve_series(level.jump, "", "points", "");
+  std::vector<double> nonmortar = level.pressure.x;  // the pressure sits at the non-mortar nodes
+  std::sort(nonmortar.begin(), nonmortar.end());
+  const double L = all.x.empty() ? 1.0 : all.x.back();
+  std::size_t first = 0;
+  while (first + 1 < nonmortar.size() && nonmortar[first + 1] <= 0.3 * L) ++first;
+  const std::size_t last = std::min(first + 4, nonmortar.empty() ? 0 : nonmortar.size() - 1);
+  const double lo = nonmortar.empty() ? 0.3 * L : nonmortar[first];
+  const double hi = nonmortar.empty() ? 0.35 * L : nonmortar[last];
+
   Figure fig;
-  fig.title = title;
+  fig.title = title + " (exact: 0)";
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "[u_h.n] = u^2_y - u^1_y [m]";
   fig.key = "top right";
-  fig.series.push_back(curve_series(level.jump, "jump at the merged-grid nodes (exact: 0)", "linespoints",
-                                    "pt 7 ps 0.6 lc rgb '#d62728'"));
+  fig.width = 1000;
+  fig.height = 520;
+  fig.settings.push_back("set xzeroaxis lt -1");
+  char window[200];
+  std::snprintf(window, sizeof window,
+                "set object 1 rect from %.12g, graph 0 to %.12g, graph 1 fc rgb '#ffe08a' fs solid 0.5 noborder behind",
+                lo, hi);
+  fig.settings.push_back(window);
+  Series points = all;
+  points.title = "whole Gamma_c: [u_h.n] at every merged-grid node";
+  points.extra = "pt 7 ps 0.5 lc rgb '#d62728'";
+  fig.series.push_back(points);
+
+  Figure zoom;
+  char zoom_title[160];
+  std::snprintf(zoom_title, sizeof zoom_title,
+                "zoom on the shaded window: x in [%.4g, %.4g] m, 4 non-mortar elements", lo, hi);
+  zoom.title = zoom_title;
+  zoom.xlabel = fig.xlabel;
+  zoom.ylabel = fig.ylabel;
+  zoom.key = "outside below center horizontal maxrows 1";
+  zoom.width = 1000;
+  zoom.height = 480;
+  zoom.settings.push_back("set xzeroaxis lt -1");
+  zoom.settings.push_back("set offsets 0, 0, graph 0.1, graph 0.1");
+  char xrange[96];
+  std::snprintf(xrange, sizeof xrange, "set xrange [%.12g:%.12g]", lo, hi);
+  zoom.settings.push_back(xrange);
+  Series inside{"[u_h.n], P1 on the merged grid", {}, {}, "linespoints", "pt 7 ps 1 lw 2 lc rgb '#d62728'"};
+  for (std::size_t i = 0; i < all.x.size(); ++i)
+    if (all.x[i] >= lo - 1e-12 * L && all.x[i] <= hi + 1e-12 * L) {
+      inside.x.push_back(all.x[i]);
+      inside.y.push_back(all.y[i]);
+    }
+  Series nodes{"non-mortar nodes (side 1)", {}, {}, "points", "pt 2 ps 2 lw 2 lc rgb '#1f77b4'"};
+  for (double x : nonmortar)
+    if (x >= lo - 1e-12 * L && x <= hi + 1e-12 * L) {
+      nodes.x.push_back(x);
+      nodes.y.push_back(0);
+    }
+  zoom.series = {inside, nodes};
+  fig.panels.push_back(zoom);
   write_figure(folder, "jump", fig, run);
 }
 

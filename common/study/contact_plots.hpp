@@ -1,5 +1,6 @@
 // Figures of chapters 3 and 4: errors against h with the theorem's slopes, error against
-// time, the pressure and the jump along Gamma_c, sigma_22 along Gamma_c in the patch test.
+// time, the pressure and the jump along Gamma_c (all of it, and a zoom on four elements),
+// sigma_22 along Gamma_c in the patch test.
 #pragma once
 
 #include <string>
@@ -13,8 +14,8 @@ namespace mortar {
 // Errors against h: u in energy and L2, the pressure in L2 and in the mesh-dependent H^{-1/2}
 // norm each beside its best approximation in M_h^1, the jump. Series, in order (the anchors
 // of the slopes): 0 energy, 1 u L2, 2 pressure L2, 3 its best approximation, 4 pressure
-// H^{-1/2}_h, 5 its best approximation, 6 jump. Each slope is drawn dashed in its anchor's
-// colour, with its label: give one only where a theorem bounds the anchor.
+// H^{-1/2}_h, 5 its best approximation, 6 jump. Each slope is drawn in its own colour and dash
+// (reference_slope_style), with its label: give one only where a theorem bounds the anchor.
 void plot_contact_errors(const std::string& folder, const ConvergenceTable& table,
                          const std::string& title, const std::vector<ReferenceSlope>& slopes,
                          bool run);

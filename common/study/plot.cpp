@@ -1,5 +1,6 @@
 #include "common/study/plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,21 +25,31 @@ std::string escape(const std::string& s) {
   return out;
 }
 
-void write_data(const std::string& path, const Figure& fig) {
+// The figure and its panels, in drawing order (top to bottom).
+void collect_panels(const Figure& fig, std::vector<const Figure*>& out) {
+  out.push_back(&fig);
+  for (const Figure& p : fig.panels) collect_panels(p, out);
+}
+
+void write_data(const std::string& path, const std::vector<const Figure*>& panels) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write " + path);
   f.precision(12);
-  f << "# " << fig.title << "\n# columns: " << fig.xlabel << ", " << fig.ylabel
-    << "\n# one block per series (gnuplot 'index')\n";
-  for (std::size_t s = 0; s < fig.series.size(); ++s) {
-    f << "# series " << s << ": " << fig.series[s].title << "\n";
-    const auto& x = fig.series[s].x;
-    const auto& y = fig.series[s].y;
-    for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
-      if (std::isnan(x[i])) f << "\n";
-      else f << x[i] << " " << y[i] << "\n";
+  f << "# one block per series (gnuplot 'index')\n";
+  std::size_t index = 0;
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    const Figure& fig = *panels[p];
+    f << "# " << (panels.size() > 1 ? "panel " + std::to_string(p + 1) + ": " : "") << fig.title
+      << "\n# columns: " << fig.xlabel << ", "
+      << (fig.y2label.empty() ? fig.ylabel : fig.ylabel + " (right axis: " + fig.y2label + ")") << "\n";
+    for (const Series& ser : fig.series) {
+      f << "# series " << index++ << ": " << ser.title << "\n";
+      for (std::size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
+        if (std::isnan(ser.x[i])) f << "\n";
+        else f << ser.x[i] << " " << ser.y[i] << "\n";
+      }
+      f << "\n\n";
     }
-    f << "\n\n";
   }
 }
 
@@ -55,6 +66,28 @@ bool run_in_folder(const std::string& folder, const std::string& script) {
   int status = 0;
   if (waitpid(pid, &status, 0) != pid) return false;
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+// cairo stamps the PDF with the time it was made, the only byte a rerun would change: a fixed
+// date of the same length in its place keeps the file (and its cross-reference offsets) as
+// they were, so an unchanged figure stays byte-identical from one run to the next.
+void fix_creation_date(const std::filesystem::path& pdf) {
+  std::string bytes;
+  {
+    std::ifstream in(pdf, std::ios::binary);
+    if (!in) return;
+    std::ostringstream s;
+    s << in.rdbuf();
+    bytes = s.str();
+  }
+  const std::string key = "/CreationDate (";
+  const std::size_t at = bytes.find(key);
+  if (at == std::string::npos) return;
+  const std::size_t begin = at + key.size(), end = bytes.find(')', begin);
+  const std::string fixed = "D:19700101000000Z";
+  if (end == std::string::npos || end - begin != fixed.size()) return;
+  bytes.replace(begin, fixed.size(), fixed);
+  std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 // C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
@@ -77,51 +110,99 @@ std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size
 }
 }  // namespace
 
-void write_figure(const std::string& folder, const std::string& name, const Figure& fig,
+std::string reference_slope_style(std::size_t k) {
+  static const char* styles[] = {
+      "dt (16,6) lw 2.5 lc rgb '#000000'",            // black, long dashes
+      "dt (12,5,3,5) lw 2.5 lc rgb '#8c564b'",        // brown, dash-dot
+      "dt (3,4) lw 3 lc rgb '#bcbd22'",               // olive, dots
+      "dt (12,4,3,4,3,4) lw 2.5 lc rgb '#e377c2'",    // pink, dash-dot-dot
+  };
+  return styles[k % 4];
+}
+
+void write_figure(const std::string& folder, const std::string& name, const Figure& figure,
                   bool run_gnuplot) {
   namespace fs = std::filesystem;
-  write_data((fs::path(folder) / (name + ".dat")).string(), fig);
+  std::vector<const Figure*> panels;
+  collect_panels(figure, panels);
+  write_data((fs::path(folder) / (name + ".dat")).string(), panels);
 
+  int width = 0, height = 0;
+  for (const Figure* p : panels) {
+    width = std::max(width, p->width);
+    height += p->height;
+  }
+  const bool multiplot = panels.size() > 1;
   std::ostringstream gp;
-  gp << "set terminal pngcairo size " << fig.width << "," << fig.height
-     << " enhanced font 'DejaVu Sans,12'\n"
-     << "set output '" << name << ".png'\n"
-     << "set title '" << escape(fig.title) << "'\n"
-     << "set xlabel '" << escape(fig.xlabel) << "'\n"
-     << "set ylabel '" << escape(fig.ylabel) << "'\n"
-     << "set key " << fig.key << " box opaque\n"
-     << "set grid\n";
-  if (fig.log_x) gp << "set logscale x\nset format x '10^{%L}'\n";
-  if (fig.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
-  if (fig.equal_axes) gp << "set size ratio -1\n";
-  for (std::size_t k = 0; k < fig.slopes.size(); ++k) gp << slope_function(fig, fig.slopes[k], k);
-  gp << "plot ";
-  for (std::size_t s = 0; s < fig.series.size(); ++s) {
-    const Series& ser = fig.series[s];
-    gp << (s ? ", \\\n     " : "") << "'" << name << ".dat' index " << s << " using 1:2 with "
-       << ser.style << " " << ser.extra << " title '" << escape(ser.title) << "'";
+  gp.precision(6);
+  gp << "# " << name << ".png (" << width << " x " << height << " pixels) and " << name
+     << ".pdf (vector, the same proportions) from the same commands\n"
+     << "do for [format in 'png pdf'] {\n"
+     << "reset\n"
+     << "if (format eq 'png') {\n"
+     << "  set terminal pngcairo size " << width << "," << height << " enhanced font 'DejaVu Sans,12'\n"
+     << "  set output '" << name << ".png'\n"
+     << "} else {\n"
+     << "  set terminal pdfcairo size " << width / 144.0 << "in," << height / 144.0
+     << "in enhanced font 'DejaVu Sans,12'\n"
+     << "  set output '" << name << ".pdf'\n"
+     << "}\n";
+  if (multiplot) gp << "set multiplot\n";
+  std::size_t index = 0, slope = 0;
+  double top = 1.0;
+  for (const Figure* p : panels) {
+    const Figure& fig = *p;
+    if (multiplot) {
+      const double h = static_cast<double>(fig.height) / height;
+      top -= h;
+      gp << (p == panels.front() ? "" : "reset\n") << "set origin 0," << std::max(0.0, top) << "\n"
+         << "set size " << static_cast<double>(fig.width) / width << "," << h << "\n";
+    }
+    gp << "set title '" << escape(fig.title) << "'\n"
+       << "set xlabel '" << escape(fig.xlabel) << "'\n"
+       << "set ylabel '" << escape(fig.ylabel) << "'\n"
+       << "set key " << fig.key << " box opaque\n"
+       << "set grid\n";
+    if (fig.log_x) gp << "set logscale x\nset format x '10^{%L}'\n";
+    if (fig.log_y) gp << "set logscale y\nset format y '10^{%L}'\n";
+    if (fig.equal_axes) gp << "set size ratio -1\n";
+    if (!fig.y2label.empty())
+      gp << "set y2label '" << escape(fig.y2label) << "'\nset ytics nomirror\nset y2tics\n";
+    for (const std::string& c : fig.settings) gp << c << "\n";
+    const std::size_t first_slope = slope;
+    for (const ReferenceSlope& r : fig.slopes) gp << slope_function(fig, r, slope++);
+    gp << "plot ";
+    for (std::size_t s = 0; s < fig.series.size(); ++s) {
+      const Series& ser = fig.series[s];
+      gp << (s ? ", \\\n     " : "") << "'" << name << ".dat' index " << index++ << " using 1:2"
+         << (ser.right_axis ? " axes x1y2" : "") << " with " << ser.style << " " << ser.extra << " title '"
+         << escape(ser.title) << "'";
+    }
+    for (std::size_t k = 0; k < fig.slopes.size(); ++k) {
+      const auto& r = fig.slopes[k];
+      std::ostringstream label;
+      label << (r.label.empty() ? "slope " : r.label);
+      if (r.label.empty()) label << r.slope;
+      gp << ", \\\n     ref" << first_slope + k << "(x) with lines "
+         << (r.style.empty() ? reference_slope_style(k) : r.style) << " title '" << escape(label.str()) << "'";
+    }
+    gp << "\n";
   }
-  for (std::size_t k = 0; k < fig.slopes.size(); ++k) {
-    const auto& r = fig.slopes[k];
-    std::ostringstream label;
-    label << (r.label.empty() ? "slope " : r.label);
-    if (r.label.empty()) label << r.slope;
-    gp << ", \\\n     ref" << k << "(x) with lines " << (r.style.empty() ? "dt 2 lw 2 lc rgb '#555555'" : r.style) << " title '"
-       << escape(label.str()) << "'";
-  }
-  gp << "\n";
+  if (multiplot) gp << "unset multiplot\n";
+  gp << "set output\n}\n";
   const fs::path script = fs::path(folder) / (name + ".gp");
   {
     std::ofstream f(script);
     if (!f) throw std::runtime_error("cannot write " + script.string());
     f << gp.str();
   }
-  const fs::path png = fs::path(folder) / (name + ".png");
   std::error_code ignored;
-  fs::remove(png, ignored);  // never leave a figure from an earlier run beside new data
+  for (const char* ext : {".png", ".pdf"})  // never leave a figure from an earlier run beside new data
+    fs::remove(fs::path(folder) / (name + ext), ignored);
   if (!run_gnuplot) return;
   if (!run_in_folder(folder, name + ".gp"))
     throw std::runtime_error("gnuplot (" MORTAR_GNUPLOT ") failed on " + script.string());
+  fix_creation_date(fs::path(folder) / (name + ".pdf"));
 }
 
 Figure error_against_time(const std::string& title, const std::string& time_label,

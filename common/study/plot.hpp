@@ -1,8 +1,11 @@
 // Figures through gnuplot: a program writes <name>.dat (with a '#' header naming columns and
-// units) and <name>.gp, then runs gnuplot to make <name>.png in the same folder, so a
-// lecturer can restyle any figure by editing its script.
+// units) and <name>.gp, then runs gnuplot to make <name>.png (raster, for the notes) and
+// <name>.pdf (vector, for slides) in the same folder, so a lecturer can restyle any figure by
+// editing its script: "gnuplot <name>.gp" writes both again. Every figure of the course is
+// written by write_figure.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -15,6 +18,7 @@ struct Series {
   std::vector<double> x, y;      // a NaN in x breaks the line (used to draw mesh edges)
   std::string style = "linespoints";  // gnuplot "with": lines, points, linespoints, steps
   std::string extra;             // more gnuplot style, e.g. "dt 2 lw 2" or "lc rgb '#888888'"
+  bool right_axis = false;       // drawn against the right-hand axis (Figure::y2label)
 };
 
 // A dashed line C h^slope through the finest (smallest x) point of series `anchor`, shifted
@@ -24,8 +28,13 @@ struct ReferenceSlope {
   int anchor = 0;
   double offset = 0.5;
   std::string label;  // default "slope p"
-  std::string style;  // gnuplot line style; default dashed grey "dt 2 lw 2 lc rgb '#555555'"
+  std::string style;  // gnuplot line style; default reference_slope_style(its place in the list)
 };
+
+// The k-th reference slope's line: its own colour and dash pattern, unlike every other
+// reference line and every data series of the course (black, brown, olive, pink with long
+// dashes, dash-dot, dots, dash-dot-dot), so two of them can be told apart in greyscale print.
+std::string reference_slope_style(std::size_t k);
 
 struct Figure {
   std::string title, xlabel, ylabel;
@@ -35,10 +44,15 @@ struct Figure {
   int width = 900, height = 650;
   std::vector<Series> series;
   std::vector<ReferenceSlope> slopes;
+  std::string y2label;                // non-empty: a right-hand axis for the right_axis series
+  std::vector<std::string> settings;  // more gnuplot commands before "plot", e.g. "set yrange [0:*]"
+  std::vector<Figure> panels;         // drawn below this one in the same file, each its own height
 };
 
 // Writes name.dat and name.gp into folder and, when run_gnuplot, runs gnuplot to make
-// name.png; throws std::runtime_error if gnuplot fails.
+// name.png (width x height pixels) and name.pdf (the same figure as vector graphics, width/144
+// x height/144 inches: the same proportions, fonts and lines as the PNG); throws
+// std::runtime_error if gnuplot fails.
 void write_figure(const std::string& folder, const std::string& name, const Figure& figure,
                   bool run_gnuplot);
 

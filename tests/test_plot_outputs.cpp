@@ -1,0 +1,141 @@
+// Figures: every plotted figure leaves name.png and name.pdf (vector) beside name.gp and
+// name.dat, and the script alone makes both again.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "common/study/plot.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool have_gnuplot() {
+  const std::string gnuplot = MORTAR_GNUPLOT;
+  if (gnuplot.find('/') != std::string::npos) return fs::exists(gnuplot);
+  return std::system(("command -v " + gnuplot + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+fs::path fresh_folder(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / ("plot_outputs_" + name);
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+mortar::Figure loglog_figure() {
+  mortar::Figure fig;
+  fig.title = "errors against h";
+  fig.xlabel = "h [m]";
+  fig.ylabel = "error [-]";
+  fig.log_x = fig.log_y = true;
+  fig.series.push_back({"energy", {0.5, 0.25, 0.125}, {0.4, 0.2, 0.1}, "linespoints", "pt 7"});
+  fig.series.push_back({"L^2", {0.5, 0.25, 0.125}, {0.1, 0.025, 0.00625}, "linespoints", "pt 5"});
+  fig.slopes.push_back({1.0, 0, 0.4, "slope 1", ""});
+  fig.slopes.push_back({2.0, 1, 0.4, "slope 2", ""});
+  return fig;
+}
+
+void expect_png_and_pdf(const fs::path& folder, const std::string& name) {
+  const std::string png = read(folder / (name + ".png")), pdf = read(folder / (name + ".pdf"));
+  ASSERT_GT(png.size(), 8u) << name << ".png missing or empty";
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  ASSERT_GT(pdf.size(), 8u) << name << ".pdf missing or empty";
+  EXPECT_EQ(pdf.substr(0, 5), "%PDF-");
+}
+
+}  // namespace
+
+TEST(PlotOutputs, the_script_names_the_png_and_the_pdf) {
+  const fs::path folder = fresh_folder("script");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), false);
+  const std::string gp = read(folder / "errors.gp");
+  EXPECT_NE(gp.find("pngcairo"), std::string::npos);
+  EXPECT_NE(gp.find("pdfcairo"), std::string::npos);
+  EXPECT_NE(gp.find("set output 'errors.png'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set output 'errors.pdf'"), std::string::npos) << gp;
+  EXPECT_TRUE(fs::exists(folder / "errors.dat"));
+  fs::remove_all(folder);
+}
+
+TEST(PlotOutputs, a_figure_leaves_both_png_and_pdf_and_the_script_makes_them_again) {
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot (" MORTAR_GNUPLOT ") not found";
+  const fs::path folder = fresh_folder("both");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), true);
+  expect_png_and_pdf(folder, "errors");
+  // "gnuplot errors.gp" alone, in the folder, writes both again
+  fs::remove(folder / "errors.png");
+  fs::remove(folder / "errors.pdf");
+  const std::string command = "cd '" + folder.string() + "' && '" MORTAR_GNUPLOT "' errors.gp";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  expect_png_and_pdf(folder, "errors");
+  fs::remove_all(folder);
+}
+
+TEST(PlotOutputs, panels_and_a_right_axis_make_one_png_and_one_pdf) {
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot (" MORTAR_GNUPLOT ") not found";
+  const fs::path folder = fresh_folder("panels");
+  mortar::Figure fig;
+  fig.title = "pressure and gap";
+  fig.xlabel = "x [m]";
+  fig.ylabel = "p [Pa]";
+  fig.y2label = "gap [m]";
+  fig.series.push_back({"p", {0, 1, 2}, {1, 2, 1}, "lines", ""});
+  mortar::Series gap{"gap", {0, 1, 2}, {1e-8, 0, 1e-8}, "lines", ""};
+  gap.right_axis = true;
+  fig.series.push_back(gap);
+  mortar::Figure zoom = fig;
+  zoom.title = "zoom";
+  zoom.height = 300;
+  fig.panels.push_back(zoom);
+  mortar::write_figure(folder.string(), "state", fig, true);
+  expect_png_and_pdf(folder, "state");
+  const std::string gp = read(folder / "state.gp");
+  EXPECT_NE(gp.find("set multiplot"), std::string::npos);
+  EXPECT_NE(gp.find("axes x1y2"), std::string::npos);
+  fs::remove_all(folder);
+}
+
+TEST(PlotOutputs, a_run_without_gnuplot_leaves_no_stale_figure) {
+  const fs::path folder = fresh_folder("stale");
+  std::ofstream(folder / "errors.png") << "old";
+  std::ofstream(folder / "errors.pdf") << "old";
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), false);
+  EXPECT_FALSE(fs::exists(folder / "errors.png"));
+  EXPECT_FALSE(fs::exists(folder / "errors.pdf"));
+  fs::remove_all(folder);
+}
+
+TEST(PlotOutputs, reference_slopes_differ_in_colour_and_dash) {
+  std::set<std::string> colours, dashes;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::string s = mortar::reference_slope_style(k);
+    colours.insert(s.substr(s.find("lc rgb")));
+    dashes.insert(s.substr(0, s.find(" lw")));
+  }
+  EXPECT_EQ(colours.size(), 4u);
+  EXPECT_EQ(dashes.size(), 4u);
+}
+
+TEST(PlotOutputs, the_same_figure_drawn_twice_gives_the_same_pdf) {
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot (" MORTAR_GNUPLOT ") not found";
+  const fs::path folder = fresh_folder("twice");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), true);
+  const std::string first = read(folder / "errors.pdf");
+  mortar::write_figure(folder.string(), "errors", loglog_figure(), true);
+  EXPECT_EQ(read(folder / "errors.pdf"), first);  // no creation time left in it
+  fs::remove_all(folder);
+}
