@@ -33,11 +33,11 @@ int main(int argc, char** argv) {
 
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::pointwise,
-                                                                     chapter03::solve_pointwise_matching);
+    const mortar::BilateralStudy study =
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::pointwise, chapter03::solve_pointwise_matching});
 
     // 4. What Theorem 4.1 says, next to what we see.
-    mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::pointwise);
+    mortar::write_bilateral_outputs(o, parser, study);
     const auto rates = study.rates();
     const mortar::BilateralLevel& finest = *study.finest;
     std::printf("rates (three finest levels): energy %.3f (Theorem 4.1 guarantees 1/2: "
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     mortar::plot_jump(o.out, finest, "pointwise matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
-    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::pointwise, chapter03::solve_pointwise_matching);
+    mortar::write_bilateral_pictures(o, study);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch03_pointwise_matching: error: %s\n", e.what());

@@ -34,11 +34,11 @@ int main(int argc, char** argv) {
 
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::integral,
-                                                                     chapter04::solve_integral_matching);
+    const mortar::BilateralStudy study =
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, chapter04::solve_integral_matching});
 
     // 4. What theory says, next to what we see.
-    mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::integral);
+    mortar::write_bilateral_outputs(o, parser, study);
     const auto rates = study.rates();
     const mortar::BilateralLevel& finest = *study.finest;
     std::printf("rates (three finest levels): energy %.3f (Theorem 4.2: 1), L2 %.3f, jump %.3f\n",
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     mortar::plot_jump(o.out, finest, "integral matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
-    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::integral, chapter04::solve_integral_matching);
+    mortar::write_bilateral_pictures(o, study);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch04_integral_matching: error: %s\n", e.what());
