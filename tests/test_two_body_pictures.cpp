@@ -17,14 +17,9 @@
 using namespace mortar;
 
 namespace {
+// L = 1, H1 = H2 = 0.5; 5 x 2 cells above Gamma_c, 7 x 3 below, nodes jittered by 0.2 h
 TwoBodies small_bodies() {
-  TwoBodyGeometry g;
-  g.n1 = 5;
-  g.m1 = 2;
-  g.n2 = 7;
-  g.m2 = 3;
-  g.jitter = 0.2;
-  return make_two_bodies(g, Material(1, 0.3), Material(2, 0.25));
+  return make_two_bodies(TwoBodyGeometry{1, 0.5, 0.5, 5, 2, 7, 3, 0.2}, Material(1, 0.3), Material(2, 0.25));
 }
 
 std::string read(const std::string& path) {

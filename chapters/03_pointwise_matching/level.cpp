@@ -10,14 +10,12 @@ mortar::BilateralSolution solve_pointwise_matching(const mortar::TwoBodies& bodi
 
   // 2. Gamma_c seen from both bodies: the non-mortar trace, whose nodes xi^1 carry the rows,
   //    and the mortar trace xi^2. Their nodes do not match.
-  mortar::BilateralSolution s;
-  mortar::ContactInterface& gamma = s.gamma;
-  gamma = mortar::contact_traces(bodies, options.nonmortar);
+  mortar::BilateralSolution s(mortar::contact_traces(bodies, options.nonmortar));
 
   // 3. The pointwise rows of B, one per node a of xi^1: u^1(a).n^1 + u^2(a).n^2 = 0, with
   //    u^2(a) interpolated from the two mortar hats around x_a. This is the space V_h^P
   //    (paper section 3). Rows on prescribed dofs only are dropped.
-  s.constraints = mortar::constraint_rows(bodies, gamma, mortar::pointwise_matching_rows(gamma),
+  s.constraints = mortar::constraint_rows(bodies, s.gamma, mortar::pointwise_matching_rows(s.gamma),
                                           scene.prescribed_mask(bodies.num_dofs()));
 
   // 4. Dirichlet elimination: the prescribed dofs leave K, their values move to the right.
@@ -31,10 +29,10 @@ mortar::BilateralSolution solve_pointwise_matching(const mortar::TwoBodies& bodi
   //    of both traces, on which [u_h.n] is P1 (chapter 1), and chapter 4's M_h^1, in which the
   //    study takes the best approximation of the pressure. The pressure is lambda_a over the
   //    tributary length of a (common/contact/contact_fields.hpp).
-  gamma.grid = mortar::merge_traces(gamma.nonmortar_trace, gamma.mortar_trace);
-  gamma.space = mortar::end_modified_p1(gamma.nonmortar_trace);
-  s.pressure = mortar::contact_pressure(gamma, s.constraints, s.lambda);
-  s.jump = mortar::normal_jump(bodies, gamma, s.u);
+  s.gamma.grid = mortar::merge_traces(s.gamma.nonmortar_trace, s.gamma.mortar_trace);
+  s.gamma.space = mortar::end_modified_p1(s.gamma.nonmortar_trace);
+  s.pressure = mortar::contact_pressure(s.gamma, s.constraints, s.lambda);
+  s.jump = mortar::normal_jump(bodies, s.gamma, s.u);
   return s;
 }
 

@@ -10,9 +10,8 @@ mortar::BilateralSolution solve_integral_matching(const mortar::TwoBodies& bodie
 
   // 2. Gamma_c seen from both bodies: the non-mortar trace xi^1 (it carries the multipliers)
   //    and the mortar trace xi^2. Their nodes do not match.
-  mortar::BilateralSolution s;
+  mortar::BilateralSolution s(mortar::contact_traces(bodies, options.nonmortar));
   mortar::ContactInterface& gamma = s.gamma;
-  gamma = mortar::contact_traces(bodies, options.nonmortar);
 
   // 3. The merged grid: the union of the nodes of xi^1 and xi^2. On each of its segments
   //    phi^1_j and phi^2_k are both linear, so their products integrate exactly (chapter 1).

@@ -4,6 +4,8 @@
 // and the jump on Gamma_c).
 #pragma once
 
+#include <utility>
+
 #include "common/contact/constraints.hpp"
 #include "common/contact/contact_fields.hpp"
 #include "common/contact/contact_scenes.hpp"
@@ -20,6 +22,10 @@ struct BilateralOptions {
 };
 
 struct BilateralSolution {
+  BilateralSolution() = default;
+  // A solve starts from Gamma_c seen from both bodies (contact_traces or make_interface).
+  explicit BilateralSolution(ContactInterface traces) : gamma(std::move(traces)) {}
+
   ContactInterface gamma;
   Constraints constraints;
   Eigen::VectorXd u;       // both bodies, full (prescribed dofs included)
