@@ -4,9 +4,14 @@
 // The simplest glue is the paper's space V_h^P: the normal displacements agree at the nodes
 // xi^1 of the non-mortar side,
 //   u1(a).n1 + u2(a).n2 = 0  for every node a of xi^1,
-// one row of B per node. The program measures the broken energy and L2 errors of u and the
-// L2(Gamma_c) errors of the pressure and of the jump, beside Theorem 4.1 (O(h1^{1/2} + h2) in
-// the energy norm), and runs the patch test, which pointwise matching fails.
+// one row of B per node. level.cpp takes the steps of one level in the order of the lecture
+// (K, the traces, the pointwise rows of B, Dirichlet elimination, the saddle point (8), the
+// pressure and the jump); the study around it is common/study/bilateral_study.cpp. The program
+// measures the broken energy and L2 errors of u and the L2(Gamma_c) errors of the pressure and
+// of the jump, beside Theorem 4.1 (O(h1^{1/2} + h2) in the energy norm), and runs the patch
+// test, which pointwise matching fails. Figures: the errors, the pressure, the jump, the patch
+// test, the coarsest meshes with the nodes xi^1 (meshes.png) and deformed (deformed.png);
+// body1.vtu, body2.vtu and contact.vtu hold the finest level for ParaView.
 //
 //   ch03_pointwise_matching                      # h2/h1 = 3/2, up to about 215k dofs
 //   ch03_pointwise_matching --h-ratio 1/3        # the non-mortar side is the coarse one

@@ -2,11 +2,17 @@
 //
 // The same two bodies as chapter 3, glued in the weak sense of the paper's space V_h^I:
 //   int_{Gamma_c} [u_h.n] psi = 0  for every psi in M_h^1,
-// one row  sum_j D_ij u1_j.n1 + sum_k M_ik u2_k.n2 = 0  per multiplier. The program measures
+// one row  sum_j D_ij u1_j.n1 + sum_k M_ik u2_k.n2 = 0  per multiplier. level.cpp takes the
+// steps of one level in the order of the lecture (K, the traces, the merged grid, M_h^1, D and
+// M, the rows of B, Dirichlet elimination, the saddle point (8), the pressure and the jump);
+// the study around it (common/study/bilateral_study.cpp) is chapter 3's. The program measures
 // the broken energy and L2 errors of u against Theorem 4.2 (O(h)); the contact pressure
 // lambda_h in L2(Gamma_c) and in the mesh-dependent H^{-1/2} norm, each beside the L2 best
 // approximation of -sigma_N in M_h^1, with the end elements split off; the jump [u_h.n]. Then
 // the patch test, which integral matching passes to round-off and pointwise matching fails.
+// Figures: the errors, the pressure, the jump, the patch test, the coarsest meshes with their
+// traces and merged grid (meshes.png) and deformed (deformed.png); body1.vtu, body2.vtu and
+// contact.vtu hold the finest level for ParaView.
 //
 //   ch04_integral_matching                       # h2/h1 = 3/2, up to about 215k dofs
 //   ch04_integral_matching --pressure-ends flat  # sigma_N' = 0 at both ends of Gamma_c

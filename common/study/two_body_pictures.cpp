@@ -70,9 +70,9 @@ Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, M
   f.xlabel = "x [m]";
   f.ylabel = "y [m] (body 1 lifted by " + metres(lift) + "; below: the traces on Gamma_c)";
   f.equal_axes = true;
-  f.key = "outside right top";
-  f.width = 1200;
-  f.height = 800;
+  f.key = "above";  // not beside: tall bodies (chapter 5) keep their title inside the canvas
+  f.width = 1000;
+  f.height = 950;
   for (int l = 0; l < 2; ++l)
     f.series.push_back(mesh_edges(shifted(bodies.body(l).mesh, l == 0 ? lift : 0),
                                   "body " + std::to_string(l + 1), std::string(body_colour(l)) + " lw 1"));
@@ -112,14 +112,14 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
   const double scale = umax > 0 ? round_factor(0.05 * std::fabs(L) / umax) : 1;
   Figure f;
   char buf[96];
-  std::snprintf(buf, sizeof buf, ": deformed, displacement x %g (largest |u_h| = %.3g m)", scale, umax);
+  std::snprintf(buf, sizeof buf, ": deformed, u_h x %g (max |u_h| = %.3g m)", scale, umax);
   f.title = title + buf;
   f.xlabel = "x [m]";
   f.ylabel = "y [m]";
   f.equal_axes = true;
-  f.key = "outside right top";
-  f.width = 1200;
-  f.height = 800;
+  f.key = "above";  // not beside: tall bodies (chapter 5) keep their title inside the canvas
+  f.width = 1000;
+  f.height = 950;
   // body 1 lifted by the magnified gap, reference and deformed alike
   const auto lifted = [&](int l) {
     Mesh mesh = bodies.body(l).mesh;
@@ -127,7 +127,7 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
       for (auto& p : mesh.nodes) p.y() += scale * gap(p.x());
     return mesh;
   };
-  if (gap) f.title += ", body 1 lifted by the gap g(x)";
+  if (gap) f.title += ", body 1 lifted by g(x)";
   for (int l = 0; l < 2; ++l)
     f.series.push_back(mesh_edges(lifted(l), l == 0 ? "reference" : "", "lc rgb '#c8c8c8' lw 1"));
   for (int l = 0; l < 2; ++l) {
