@@ -99,8 +99,9 @@ TEST(Constraints, the_rows_of_each_matching_are_the_mortar_matrices_or_the_nodal
     for (Matching m : {Matching::pointwise, Matching::integral}) {
       const Constraints whole = build_constraints(b, g, m, nothing_prescribed(b));
       const Constraints steps =
-          constraint_rows(b, g, m, m == Matching::integral ? integral : point, nothing_prescribed(b));
+          constraint_rows(b, g, m == Matching::integral ? integral : point, nothing_prescribed(b));
       EXPECT_EQ((Eigen::MatrixXd(whole.B) - Eigen::MatrixXd(steps.B)).norm(), 0.0) << matching_name(m);
+      EXPECT_EQ(steps.matching, m);
     }
   }
 }

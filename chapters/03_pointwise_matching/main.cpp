@@ -4,9 +4,14 @@
 // The simplest glue is the paper's space V_h^P: the normal displacements agree at the nodes
 // xi^1 of the non-mortar side,
 //   u1(a).n1 + u2(a).n2 = 0  for every node a of xi^1,
-// one row of B per node. The program measures the broken energy and L2 errors of u and the
-// L2(Gamma_c) errors of the pressure and of the jump, beside Theorem 4.1 (O(h1^{1/2} + h2) in
-// the energy norm), and runs the patch test, which pointwise matching fails.
+// one row of B per node. level.cpp takes the steps of one level in the order of the lecture
+// (K, the traces, the pointwise rows of B, Dirichlet elimination, the saddle point (8), the
+// pressure and the jump); the study around it is common/study/bilateral_study.cpp. The program
+// measures the broken energy and L2 errors of u and the L2(Gamma_c) errors of the pressure and
+// of the jump, beside Theorem 4.1 (O(h1^{1/2} + h2) in the energy norm), and runs the patch
+// test, which pointwise matching fails. Figures: the errors, the pressure, the jump, the patch
+// test, the coarsest meshes with the nodes xi^1 (meshes.png) and deformed (deformed.png);
+// body1.vtu, body2.vtu and contact.vtu hold the finest level for ParaView.
 //
 //   ch03_pointwise_matching                      # h2/h1 = 3/2, up to about 215k dofs
 //   ch03_pointwise_matching --h-ratio 1/3        # the non-mortar side is the coarse one
@@ -33,11 +38,11 @@ int main(int argc, char** argv) {
 
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::pointwise,
-                                                                     chapter03::solve_pointwise_matching);
+    const mortar::BilateralStudy study =
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::pointwise, chapter03::solve_pointwise_matching});
 
     // 4. What Theorem 4.1 says, next to what we see.
-    mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::pointwise);
+    mortar::write_bilateral_outputs(o, parser, study);
     const auto rates = study.rates();
     const mortar::BilateralLevel& finest = *study.finest;
     std::printf("rates (three finest levels): energy %.3f (Theorem 4.1 guarantees 1/2: "
@@ -64,7 +69,7 @@ int main(int argc, char** argv) {
     mortar::plot_jump(o.out, finest, "pointwise matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
-    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::pointwise, chapter03::solve_pointwise_matching);
+    mortar::write_bilateral_pictures(o, study);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch03_pointwise_matching: error: %s\n", e.what());

@@ -2,11 +2,17 @@
 //
 // The same two bodies as chapter 3, glued in the weak sense of the paper's space V_h^I:
 //   int_{Gamma_c} [u_h.n] psi = 0  for every psi in M_h^1,
-// one row  sum_j D_ij u1_j.n1 + sum_k M_ik u2_k.n2 = 0  per multiplier. The program measures
+// one row  sum_j D_ij u1_j.n1 + sum_k M_ik u2_k.n2 = 0  per multiplier. level.cpp takes the
+// steps of one level in the order of the lecture (K, the traces, the merged grid, M_h^1, D and
+// M, the rows of B, Dirichlet elimination, the saddle point (8), the pressure and the jump);
+// the study around it (common/study/bilateral_study.cpp) is chapter 3's. The program measures
 // the broken energy and L2 errors of u against Theorem 4.2 (O(h)); the contact pressure
 // lambda_h in L2(Gamma_c) and in the mesh-dependent H^{-1/2} norm, each beside the L2 best
 // approximation of -sigma_N in M_h^1, with the end elements split off; the jump [u_h.n]. Then
 // the patch test, which integral matching passes to round-off and pointwise matching fails.
+// Figures: the errors, the pressure, the jump, the patch test, the coarsest meshes with their
+// traces and merged grid (meshes.png) and deformed (deformed.png); body1.vtu, body2.vtu and
+// contact.vtu hold the finest level for ParaView.
 //
 //   ch04_integral_matching                       # h2/h1 = 3/2, up to about 215k dofs
 //   ch04_integral_matching --pressure-ends flat  # sigma_N' = 0 at both ends of Gamma_c
@@ -34,11 +40,11 @@ int main(int argc, char** argv) {
 
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, mortar::Matching::integral,
-                                                                     chapter04::solve_integral_matching);
+    const mortar::BilateralStudy study =
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, chapter04::solve_integral_matching});
 
     // 4. What theory says, next to what we see.
-    mortar::write_bilateral_outputs(o, parser, study, mortar::Matching::integral);
+    mortar::write_bilateral_outputs(o, parser, study);
     const auto rates = study.rates();
     const mortar::BilateralLevel& finest = *study.finest;
     std::printf("rates (three finest levels): energy %.3f (Theorem 4.2: 1), L2 %.3f, jump %.3f\n",
@@ -71,7 +77,7 @@ int main(int argc, char** argv) {
     mortar::plot_jump(o.out, finest, "integral matching: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
-    mortar::write_bilateral_pictures(o, exact, study, mortar::Matching::integral, chapter04::solve_integral_matching);
+    mortar::write_bilateral_pictures(o, study);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch04_integral_matching: error: %s\n", e.what());

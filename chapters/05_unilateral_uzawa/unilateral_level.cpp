@@ -41,26 +41,29 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
   r.gap = scene.gap;
   // 2. K of both bodies, block diagonal: the bodies only meet through B.
   const mortar::SparseMatrix K = r.bodies.stiffness();
-  // 3. Gamma_c as chapter 4 builds it: both traces, the merged grid, M_h^1, D and M.
+  // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
+  //    D and M (chapter 4's level.cpp takes these steps one by one).
   r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
-  // 4. The constraint rows of the chosen matching (chapter 3's or chapter 4's B), and the
-  //    tested gap G: g at the nodes xi^1 (pointwise) or int g psi_i (integral), so that the
+  // 4. The constraint rows of the chosen matching: chapter 3's pointwise rows at the nodes
+  //    xi^1 or chapter 4's rows D, M against M_h^1, attached to the normal dofs as B.
+  r.constraints = mortar::constraint_rows(r.bodies, r.gamma, mortar::matching_rows(r.gamma, setup.matching),
+                                          scene.data.prescribed_mask(r.bodies.num_dofs()));
+  // 5. The tested gap G: g at the nodes xi^1 (pointwise) or int g psi_i (integral), so that the
   //    discrete convex set K_h^P or K_h^I is B u <= G.
-  r.constraints = mortar::build_constraints(r.bodies, r.gamma, setup.matching,
-                                            scene.data.prescribed_mask(r.bodies.num_dofs()));
   const Eigen::VectorXd G = mortar::tested_gap(r.gamma, r.constraints, scene.gap);
 
-  // 5. Dirichlet dofs leave the system; their values move into f and into the gap, G - B u_d.
+  // 6. Dirichlet elimination: the prescribed dofs leave the system; their values move into f
+  //    and into the gap, G - B u_d.
   const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene.data.F, scene.data.dirichlet);
   const mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
-  // 6. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
+  // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
   //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
   r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
   r.u = system.expand(r.solution.u);
   r.time_s = clock.seconds();
   if (setup.measure_limit) r.limit_s = mortar::two_body_limit(r.bodies, scene.data);
 
-  // 7. What the solve means on Gamma_c: pressure, jump, contact zone, penetration, total force.
+  // 8. What the solve means on Gamma_c: pressure, jump, contact zone, penetration, total force.
   r.pressure = mortar::contact_pressure(r.gamma, r.constraints, r.solution.lambda);
   r.jump = mortar::normal_jump(r.bodies, r.gamma, r.u);
   r.zone = mortar::contact_zone(r.pressure);

@@ -1,37 +1,50 @@
-// One bilateral contact solve (chapters 3 and 4): Gamma_c, the constraint rows of the chosen
-// matching, Dirichlet elimination, the saddle-point solve, timed as one piece.
+// Bilateral contact (chapters 3 and 4): what one solve produces, its saddle-point step, and
+// the whole solve for either matching, built from the same named steps as the chapters'
+// level.cpp (the traces, the rows of B, Dirichlet elimination, the saddle point, the pressure
+// and the jump on Gamma_c).
 #pragma once
 
+#include <utility>
+
 #include "common/contact/constraints.hpp"
+#include "common/contact/contact_fields.hpp"
 #include "common/contact/contact_scenes.hpp"
 #include "common/contact/saddle_point.hpp"
+#include "common/fem/dirichlet.hpp"
 
 namespace mortar {
 
 struct BilateralOptions {
-  Matching matching = Matching::integral;
+  Matching matching = Matching::integral;  // read by solve_bilateral only
   int nonmortar = 0;  // body index of the non-mortar side
   SaddleSolver solver = SaddleSolver::elimination;
   SpdBackend backend = fastest_spd_backend();
 };
 
 struct BilateralSolution {
+  BilateralSolution() = default;
+  // A solve starts from Gamma_c seen from both bodies (contact_traces or make_interface).
+  explicit BilateralSolution(ContactInterface traces) : gamma(std::move(traces)) {}
+
   ContactInterface gamma;
   Constraints constraints;
   Eigen::VectorXd u;       // both bodies, full (prescribed dofs included)
   Eigen::VectorXd lambda;  // one multiplier per kept constraint row
-  double time_s = 0;       // assembly of K and B, Dirichlet elimination, solve
+  // What (u_h, lambda_h) says on Gamma_c: the pressure at the non-mortar nodes and the normal
+  // jump [u_h.n] at the merged-grid nodes (contact_fields.hpp).
+  InterfaceCurve pressure, jump;
 };
 
+// The saddle-point step, once K is reduced to the free dofs (system) and s.constraints holds
+// B: solves [K B^T; B 0] (u, lambda) = (f, 0) on the free dofs (the prescribed values of the
+// rows' dofs move to the right-hand side, G = -B u_d) and puts s.u on every dof, s.lambda.
+void solve_saddle_point(const ReducedSystem& system, const BilateralOptions& options, BilateralSolution& s);
+
+// One whole bilateral solve for options.matching: K, make_interface, build_constraints,
+// Dirichlet elimination, the saddle point, the pressure and the jump. Chapters 3 and 4 take
+// these steps one by one in their level.cpp; tests and chapter 5 call this.
 BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scene,
                                   const BilateralOptions& options);
-
-// The last step of one bilateral solve, once B is known: assemble K of both bodies, move the
-// Dirichlet dofs into the right-hand side, solve the saddle point [K B^T; B 0] (u, lambda) =
-// (f, 0) on the free dofs and put the prescribed values back into u (all dofs).
-SaddlePointSolution solve_glued_bodies(const TwoBodies& bodies, const SceneData& scene,
-                                       const Constraints& constraints, SaddleSolver solver,
-                                       SpdBackend backend = fastest_spd_backend());
 
 // The physical limit of a two-body level (README.md, "Speed"): assemble K of both bodies,
 // eliminate the Dirichlet dofs, one Cholesky factorization and one solve; the scene must

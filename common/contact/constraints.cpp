@@ -16,7 +16,7 @@ std::string matching_name(Matching m) { return m == Matching::pointwise ? "point
 
 ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar) {
   if (nonmortar != 0 && nonmortar != 1)
-    throw std::invalid_argument("make_interface: the non-mortar body is 0 or 1, got " +
+    throw std::invalid_argument("contact_traces: the non-mortar body is 0 or 1, got " +
                                 std::to_string(nonmortar));
   ContactInterface g;
   g.nonmortar = nonmortar;
@@ -41,6 +41,7 @@ MatchingRows pointwise_matching_rows(const ContactInterface& g) {
   const int n = g.nonmortar_trace.num_nodes();
   std::vector<Eigen::Triplet<double>> nm, m;
   MatchingRows c;
+  c.matching = Matching::pointwise;
   for (int a = 0; a < n; ++a) {
     nm.emplace_back(a, a, 1.0);
     // value of the mortar trace at x_a: its two hats on the element containing x_a
@@ -60,26 +61,29 @@ MatchingRows pointwise_matching_rows(const ContactInterface& g) {
 }
 
 MatchingRows integral_matching_rows(const ContactInterface& g) {
-  MatchingRows c{g.matrices.D, g.matrices.M, {}};
+  MatchingRows c{Matching::integral, g.matrices.D, g.matrices.M, {}};
   for (int i = 0; i < g.space.dim(); ++i) c.row_node.push_back(g.space.node_of(i));
   return c;
 }
 
-Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g,
-                              Matching matching, const std::vector<bool>& prescribed) {
-  const MatchingRows rows = matching == Matching::pointwise ? pointwise_matching_rows(g) : integral_matching_rows(g);
-  return constraint_rows(bodies, g, matching, rows, prescribed);
+MatchingRows matching_rows(const ContactInterface& g, Matching matching) {
+  return matching == Matching::pointwise ? pointwise_matching_rows(g) : integral_matching_rows(g);
 }
 
-Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, Matching matching,
-                            const MatchingRows& c, const std::vector<bool>& prescribed) {
+Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g,
+                              Matching matching, const std::vector<bool>& prescribed) {
+  return constraint_rows(bodies, g, matching_rows(g, matching), prescribed);
+}
+
+Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
+                            const std::vector<bool>& prescribed) {
   if (static_cast<int>(prescribed.size()) != bodies.num_dofs())
-    throw std::invalid_argument("build_constraints: the prescribed mask has the wrong size");
+    throw std::invalid_argument("constraint_rows: the prescribed mask has the wrong size");
   const int nm = g.nonmortar, m = g.mortar();
   const double n_nm = TwoBodies::normal_y(nm), n_m = TwoBodies::normal_y(m);
 
   Constraints out;
-  out.matching = matching;
+  out.matching = c.matching;
   std::vector<Eigen::Triplet<double>> entries;
   int kept = 0;
   for (int row = 0; row < c.nonmortar.rows(); ++row) {

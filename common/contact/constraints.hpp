@@ -46,14 +46,18 @@ ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double m
 // The coefficients of each row of B before the normals and the global dofs are attached:
 // (B u)_row = sum_j nonmortar(row, j) u_nm,j.n_nm + sum_k mortar(row, k) u_m,k.n_m.
 struct MatchingRows {
+  Matching matching = Matching::integral;
   Eigen::SparseMatrix<double, Eigen::RowMajor> nonmortar, mortar;
   std::vector<int> row_node;  // the non-mortar trace node each row sits on
 };
-// Pointwise matching (V_h^P): one row per node a of the non-mortar trace, the value of the
-// mortar trace at x_a from its two hats on the element containing x_a.
+// Pointwise matching (V_h^P): one row per node a of xi^1, u^1(a).n^1 + u^2(a).n^2 with u^2(a)
+// interpolated from the two mortar hats on the element containing x_a. Needs only the traces.
 MatchingRows pointwise_matching_rows(const ContactInterface& gamma);
-// Integral matching (V_h^I): the rows are D and M, one per multiplier psi_i of M_h^1.
+// Integral matching (V_h^I): the rows are D and M, one per multiplier psi_i of M_h^1
+// (int psi_i [u_h.n] = sum_j D_ij u^1_j.n^1 + sum_k M_ik u^2_k.n^2). Needs gamma.matrices.
 MatchingRows integral_matching_rows(const ContactInterface& gamma);
+// The rows of the matching given by name (chapter 5 takes either).
+MatchingRows matching_rows(const ContactInterface& gamma, Matching matching);
 
 struct Constraints {
   Matching matching = Matching::integral;
@@ -64,10 +68,11 @@ struct Constraints {
   std::vector<int> pivot_dof;
 };
 
-// Builds B and drops rows whose every entry sits on a prescribed (Dirichlet) dof: such a row
-// says nothing about the unknowns and would make the saddle-point matrix singular.
-Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& gamma, Matching matching,
-                            const MatchingRows& rows, const std::vector<bool>& prescribed);
+// B: the rows attached to the normal dofs of both bodies (n^1 = (0, -1), n^2 = (0, 1)). Rows
+// whose every entry sits on a prescribed (Dirichlet) dof are dropped: such a row says nothing
+// about the unknowns and would make the saddle-point matrix singular.
+Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& gamma, const MatchingRows& rows,
+                            const std::vector<bool>& prescribed);
 // constraint_rows of the matching's own rows.
 Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& gamma,
                               Matching matching, const std::vector<bool>& prescribed);

@@ -170,7 +170,7 @@ Row BilateralLevel::row() const {
 BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const TwoBodyGeometry& g,
                                         const BilateralOptions& options, const BilateralSolver& solve) {
   TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
-  const Stopwatch clock;  // loads, stiffness, constraints, solve: everything but the mesh
+  const Stopwatch clock;  // loads, stiffness, constraints, solve, pressure, jump: all but the mesh
   const SceneData scene = manufactured_scene(bodies, exact);
   BilateralLevel r{std::move(bodies), {}, {}, {}};
   r.solution = solve(r.bodies, scene, options);
@@ -183,8 +183,8 @@ BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const 
                          r.bodies.part(r.solution.u, l), exact.exact(l));
   r.err_energy = norms.relative_energy();  // the broken energy norm over both bodies
   r.err_l2 = norms.relative_l2();
-  r.pressure = contact_pressure(r.solution.gamma, r.solution.constraints, r.solution.lambda);
-  r.jump = normal_jump(r.bodies, r.solution.gamma, r.solution.u);
+  r.pressure = r.solution.pressure;
+  r.jump = r.solution.jump;
   const auto p = [&](double x) { return exact.pressure(x); };
   const auto c = [&](double x) { return exact.normal_displacement(x); };
   r.pressure_errors = pressure_errors(r.solution.gamma, r.pressure, p);
@@ -238,24 +238,25 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
 namespace mortar {
 
 BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                                   Matching matching, const BilateralSolver& solve) {
+                                   const BilateralMethod& method) {
   BilateralStudy study;
-  const BilateralOptions solver = solver_options(o, matching);
+  study.matching = method.matching;
+  const BilateralOptions solver = solver_options(o, method.matching);
   for (int level = 0; level < o.levels; ++level) {
-    study.finest = std::make_unique<BilateralLevel>(
-        solve_manufactured_level(exact, level_geometry(o, level), solver, solve));
-    study.table.add(study.finest->row());
+    auto solved = std::make_unique<BilateralLevel>(
+        solve_manufactured_level(exact, level_geometry(o, level), solver, method.solve));
+    study.table.add(solved->row());
+    (level == 0 ? study.coarsest : study.finest) = std::move(solved);
   }
-  const bool own_pointwise = matching == Matching::pointwise;
-  study.patch_pointwise = run_patch_test(o, Matching::pointwise, own_pointwise ? solve : solve_bilateral);
-  study.patch_integral = run_patch_test(o, Matching::integral, own_pointwise ? solve_bilateral : solve);
+  const bool own_pointwise = method.matching == Matching::pointwise;
+  study.patch_pointwise = run_patch_test(o, Matching::pointwise, own_pointwise ? method.solve : solve_bilateral);
+  study.patch_integral = run_patch_test(o, Matching::integral, own_pointwise ? solve_bilateral : method.solve);
   return study;
 }
 
-void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
-                             const BilateralStudy& study, Matching matching) {
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study) {
   const BilateralLevel& f = *study.finest;
-  const bool integral = matching == Matching::integral;
+  const bool integral = study.matching == Matching::integral;
   JsonObject results;
   results.set("h1_m", f.h1)
       .set("h2_m", f.h2)
@@ -273,26 +274,20 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
       .set("patch_test_rel_error", (integral ? study.patch_integral : study.patch_pointwise).rel_error)
       .set(integral ? "patch_test_rel_error_pointwise" : "patch_test_rel_error_integral",
            (integral ? study.patch_pointwise : study.patch_integral).rel_error)
-      .set("matching", matching_name(matching))
+      .set("matching", matching_name(study.matching))
       .set("saddle_solver", o.saddle_solver);
   study.table.write_csv(o.out + "/convergence.csv");
   write_summary(o.out + "/summary.json", parser, study.rates(), results);
 }
 
-void write_bilateral_pictures(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                              const BilateralStudy& study, Matching matching, const BilateralSolver& solve) {
-  const bool integral = matching == Matching::integral;
-  const std::string name = matching_name(matching) + " matching";
-  const BilateralLevel coarsest = solve_manufactured_level(exact, level_geometry(o, 0), solver_options(o, matching), solve);
-  write_figure(o.out, "meshes",
-               two_body_meshes(coarsest.bodies, coarsest.solution.gamma, integral,
-                               name + ": the two meshes of the coarsest level and their traces on Gamma_c"),
-               !o.no_plot);
-  write_figure(o.out, "deformed",
-               deformed_two_bodies(coarsest.bodies, coarsest.solution.u, name + ": coarsest level deformed"),
-               !o.no_plot);
+void write_bilateral_pictures(const BilateralStudyOptions& o, const BilateralStudy& study) {
+  const std::string name = matching_name(study.matching) + " matching";
+  const BilateralLevel& c = *study.coarsest;
+  const bool run = !o.no_plot;
+  write_figure(o.out, "meshes", two_body_meshes(c.bodies, c.solution.gamma, study.matching, name), run);
+  write_figure(o.out, "deformed", deformed_two_bodies(c.bodies, c.solution.u, name + ", coarsest level"), run);
   const BilateralLevel& f = *study.finest;
-  write_two_body_vtu(o.out, f.bodies, f.solution.u, f.pressure);
+  write_two_body_vtu(o.out, f.bodies, f.solution.u, f.pressure, f.jump);
 }
 
 }  // namespace mortar

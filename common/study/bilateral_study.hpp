@@ -63,7 +63,7 @@ BilateralOptions solver_options(const BilateralStudyOptions& o, Matching matchin
 struct BilateralLevel {
   TwoBodies bodies;
   BilateralSolution solution;
-  InterfaceCurve pressure, jump;
+  InterfaceCurve pressure, jump;  // solution.pressure and solution.jump
   double h1 = 0, h2 = 0;
   double time_s = 0, limit_s = 0;
   double err_energy = 0, err_l2 = 0, err_jump = 0;
@@ -71,11 +71,17 @@ struct BilateralLevel {
   Row row() const;
 };
 
-// One bilateral solve on given bodies and loads. Chapters 3 and 4 each write their own, the
-// steps of their matching in order (level.cpp); solve_bilateral is the library's, for any
-// matching.
+// One bilateral solve on given bodies and loads: from K to (u_h, lambda_h), the pressure and
+// the jump. Chapters 3 and 4 each write their own, the steps of their matching in order
+// (level.cpp); solve_bilateral is the library's, for either matching.
 using BilateralSolver =
     std::function<BilateralSolution(const TwoBodies&, const SceneData&, const BilateralOptions&)>;
+
+// A chapter's method: its matching (named in the outputs) and its own solve.
+struct BilateralMethod {
+  Matching matching = Matching::integral;
+  BilateralSolver solve = solve_bilateral;
+};
 
 // One level of the study: the meshes, the manufactured loads, the solve (timed with the loads),
 // the physical limit, then the errors of u, lambda_h and [u_h.n] against the exact solution.
@@ -94,25 +100,24 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
 
 // The whole study of one chapter: every level of the manufactured solution solved by the
 // chapter's own solve (one line each as it finishes), then the patch test with both matchings
-// on the same meshes, the chapter's matching by the chapter's solve.
+// on the same meshes, the chapter's matching by the chapter's solve, the other by
+// solve_bilateral.
 struct BilateralStudy {
+  Matching matching = Matching::integral;
   ConvergenceTable table;
-  std::unique_ptr<BilateralLevel> finest;
+  std::unique_ptr<BilateralLevel> coarsest, finest;
   PatchTestResult patch_pointwise, patch_integral;
   std::map<std::string, double> rates() const { return table.rates(); }
 };
 BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                                   Matching matching, const BilateralSolver& solve);
+                                   const BilateralMethod& method);
 
 // convergence.csv and summary.json; results hold the finest level, the patch test of this
 // chapter's matching (patch_test_rel_error) and of the other one.
-void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser,
-                             const BilateralStudy& study, Matching matching);
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study);
 
-// Pictures of the problem: meshes.png (the coarsest meshes, exploded, with the nodes xi^1 and
-// xi^2 and, for integral matching, the merged grid) and deformed.png (the coarsest level solved
-// again), then body1.vtu, body2.vtu and contact.vtu of the finest level.
-void write_bilateral_pictures(const BilateralStudyOptions& o, const ManufacturedContact& exact,
-                              const BilateralStudy& study, Matching matching, const BilateralSolver& solve);
+// Pictures of the problem (common/study/two_body_pictures.hpp): meshes.png and deformed.png of
+// the coarsest level, then body1.vtu, body2.vtu and contact.vtu of the finest level.
+void write_bilateral_pictures(const BilateralStudyOptions& o, const BilateralStudy& study);
 
 }  // namespace mortar

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 
 #include "common/study/vtu.hpp"
 
@@ -16,9 +18,21 @@ Mesh shifted(Mesh mesh, double dy) {
   return mesh;
 }
 
-Series trace_nodes(const InterfaceTrace& trace, double y, const std::string& title, const std::string& extra) {
-  Series s{title, trace.x, std::vector<double>(trace.x.size(), y), "points", extra};
+// A number line at height y with a tick at every node: a horizontal line, then one short
+// vertical stroke per node (NaN between strokes breaks the line).
+Series node_line(const std::vector<double>& x, double y, double tick, const std::string& title,
+                 const std::string& extra) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Series s{title, {x.front(), x.back(), nan}, {y, y, nan}, "lines", extra};
+  for (double xi : x) {
+    s.x.insert(s.x.end(), {xi, xi, nan});
+    s.y.insert(s.y.end(), {y - tick, y + tick, nan});
+  }
   return s;
+}
+
+Series points_at(const std::vector<double>& x, double y, const std::string& title, const std::string& extra) {
+  return Series{title, x, std::vector<double>(x.size(), y), "points", extra};
 }
 
 double largest_displacement(const Eigen::VectorXd& u) {
@@ -34,32 +48,58 @@ double round_factor(double x) {
     if (f * p <= x) return f * p;
   return p;
 }
+
+std::string metres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g m", v);
+  return buf;
+}
 }  // namespace
 
-Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, bool merged_grid,
+Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, Matching matching,
                        const std::string& title) {
-  const double L = gamma.nonmortar_trace.x.back() - gamma.nonmortar_trace.x.front();
-  const double gap = 0.08 * L;  // body 1 lifted by this much: an exploded view
+  const double L = gamma.nonmortar_trace.length();
+  const double lift = 0.05 * L;  // body 1 lifted: an exploded view of Gamma_c
+  double bottom = 0;             // the lowest point of body 2
+  for (const auto& p : bodies.body(1).mesh.nodes) bottom = std::min(bottom, p.y());
+  const double row = 0.07 * L, tick = 0.018 * L;  // the strip's rows below body 2
+  const bool integral = matching == Matching::integral;
+
   Figure f;
-  f.title = title;
+  f.title = title + ": the meshes of the coarsest level and their traces on Gamma_c";
   f.xlabel = "x [m]";
-  f.ylabel = "y [m] (body 1 lifted by " + std::to_string(gap).substr(0, 4) + " m)";
+  f.ylabel = "y [m] (body 1 lifted by " + metres(lift) + "; below: the traces on Gamma_c)";
   f.equal_axes = true;
-  f.key = "outside right top";
-  f.width = 1100;
+  f.key = "above";  // not beside: tall bodies (chapter 5) keep their title inside the canvas
+  f.width = 1000;
+  f.height = 950;
   for (int l = 0; l < 2; ++l)
-    f.series.push_back(mesh_edges(shifted(bodies.body(l).mesh, l == 0 ? gap : 0),
+    f.series.push_back(mesh_edges(shifted(bodies.body(l).mesh, l == 0 ? lift : 0),
                                   "body " + std::to_string(l + 1), std::string(body_colour(l)) + " lw 1"));
-  const bool body1_nonmortar = gamma.nonmortar == 0;
-  const double y_nm = body1_nonmortar ? gap : 0, y_m = body1_nonmortar ? 0 : gap;
-  f.series.push_back(trace_nodes(gamma.nonmortar_trace, y_nm, "xi^1: non-mortar nodes",
-                                 "pt 7 ps 1.2 lc rgb '#000000'"));
-  f.series.push_back(trace_nodes(gamma.mortar_trace, y_m, "xi^2: mortar nodes", "pt 5 ps 1.0 lc rgb '#cc0000'"));
-  if (merged_grid) {
-    Series s{"merged grid", gamma.grid.breakpoints, std::vector<double>(gamma.grid.breakpoints.size(), 0.5 * gap),
-             "linespoints", "pt 2 ps 1.2 lw 1 lc rgb '#228b22'"};
-    f.series.push_back(s);
+  // the trace nodes on the bodies themselves
+  const int nm = gamma.nonmortar;
+  const double y_nm = nm == 0 ? lift : 0, y_m = nm == 0 ? 0 : lift;
+  const std::string xi1 = integral ? "xi^1: non-mortar nodes, M_h^1 lives here"
+                                   : "xi^1: non-mortar nodes, one pointwise row each";
+  f.series.push_back(points_at(gamma.nonmortar_trace.x, y_nm, xi1, "pt 7 ps 1.3 lc rgb '#000000'"));
+  f.series.push_back(points_at(gamma.mortar_trace.x, y_m, "xi^2: mortar nodes", "pt 4 ps 1.3 lc rgb '#cc0000'"));
+  if (!integral) {
+    // each pointwise row reads u^2 at x_a, between two mortar nodes: a dotted link from a to
+    // the mortar trace
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Series links{"the row of a: u^2 interpolated at x_a", {}, {}, "linespoints", "dt 3 pt 2 ps 0.8 lc rgb '#555555'"};
+    for (double x : gamma.nonmortar_trace.x) {
+      links.x.insert(links.x.end(), {x, x, nan});
+      links.y.insert(links.y.end(), {y_nm, y_m, nan});
+    }
+    f.series.push_back(links);
   }
+  // the strip: the same nodes on number lines, then the merged grid
+  f.series.push_back(node_line(gamma.nonmortar_trace.x, bottom - row, tick, "strip: xi^1", "lw 2 lc rgb '#000000'"));
+  f.series.push_back(node_line(gamma.mortar_trace.x, bottom - 2 * row, tick, "strip: xi^2", "lw 2 lc rgb '#cc0000'"));
+  if (integral)
+    f.series.push_back(node_line(gamma.grid.breakpoints, bottom - 3 * row, tick,
+                                 "strip: merged grid (every node of xi^1 and xi^2)", "lw 2 lc rgb '#228b22'"));
   return f;
 }
 
@@ -71,14 +111,15 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
   const double umax = largest_displacement(u);
   const double scale = umax > 0 ? round_factor(0.05 * std::fabs(L) / umax) : 1;
   Figure f;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, " (displacement x %g)", scale);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, ": deformed, u_h x %g (max |u_h| = %.3g m)", scale, umax);
   f.title = title + buf;
   f.xlabel = "x [m]";
   f.ylabel = "y [m]";
   f.equal_axes = true;
-  f.key = "outside right top";
-  f.width = 1100;
+  f.key = "above";  // not beside: tall bodies (chapter 5) keep their title inside the canvas
+  f.width = 1000;
+  f.height = 950;
   // body 1 lifted by the magnified gap, reference and deformed alike
   const auto lifted = [&](int l) {
     Mesh mesh = bodies.body(l).mesh;
@@ -86,7 +127,7 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
       for (auto& p : mesh.nodes) p.y() += scale * gap(p.x());
     return mesh;
   };
-  if (gap) f.title += ", body 1 lifted by the gap g(x)";
+  if (gap) f.title += ", body 1 lifted by g(x)";
   for (int l = 0; l < 2; ++l)
     f.series.push_back(mesh_edges(lifted(l), l == 0 ? "reference" : "", "lc rgb '#c8c8c8' lw 1"));
   for (int l = 0; l < 2; ++l) {
@@ -98,14 +139,29 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
   return f;
 }
 
+std::vector<double> curve_at(const InterfaceCurve& curve, const std::vector<double>& x) {
+  if (curve.x.size() < 2 || curve.value.size() != curve.x.size())
+    throw std::invalid_argument("curve_at: the curve needs two points or more, one value each");
+  std::vector<double> out;
+  out.reserve(x.size());
+  for (double xi : x) {
+    const auto it = std::upper_bound(curve.x.begin(), curve.x.end(), xi);
+    const std::size_t e = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - curve.x.begin(), 1), curve.x.size() - 1) - 1;
+    const double s = (xi - curve.x[e]) / (curve.x[e + 1] - curve.x[e]);
+    out.push_back((1 - s) * curve.value[e] + s * curve.value[e + 1]);
+  }
+  return out;
+}
+
 void write_two_body_vtu(const std::string& folder, const TwoBodies& bodies, const Eigen::VectorXd& u,
-                        const InterfaceCurve& pressure) {
+                        const InterfaceCurve& pressure, const InterfaceCurve& jump) {
   for (int l = 0; l < 2; ++l) {
     const Body& b = bodies.body(l);
-    const Eigen::VectorXd ul = bodies.part(u, l);
-    write_vtu(folder + "/body" + std::to_string(l + 1) + ".vtu", b.mesh, ul, element_stresses(b.mesh, b.material, ul));
+    write_vtu(folder + "/body" + std::to_string(l + 1) + ".vtu", body_grid(b.mesh, b.material, bodies.part(u, l)),
+              VtuFormat::binary);
   }
-  write_curve_vtu(folder + "/contact.vtu", pressure.x, {{"pressure", pressure.value}});
+  write_curve_vtu(folder + "/contact.vtu", jump.x,
+                  {{"pressure", curve_at(pressure, jump.x)}, {"normal_jump", jump.value}}, VtuFormat::binary);
 }
 
 }  // namespace mortar

@@ -1,69 +1,158 @@
 #include "common/study/vtu.hpp"
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
 namespace mortar {
 
-void write_vtu(const std::string& path, const Mesh& mesh, const Eigen::VectorXd& u,
-               const std::vector<Eigen::Vector3d>& stress) {
-  if (u.size() != mesh.num_dofs() || stress.size() != mesh.triangles.size())
-    throw std::invalid_argument("write_vtu: field sizes do not match the mesh");
+namespace {
+const char* type_name(double) { return "Float64"; }
+const char* type_name(std::int32_t) { return "Int32"; }
+const char* type_name(std::uint8_t) { return "UInt8"; }
+
+// base64 of a UInt32 byte count followed by the bytes of the values (the machine is
+// little-endian on every platform the course builds on; byte_order says so).
+template <class T>
+void write_base64(std::ostream& f, const std::vector<T>& values) {
+  static const char table[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::uint32_t count = static_cast<std::uint32_t>(values.size() * sizeof(T));
+  std::vector<unsigned char> bytes(sizeof count + count);
+  std::memcpy(bytes.data(), &count, sizeof count);
+  if (count > 0) std::memcpy(bytes.data() + sizeof count, values.data(), count);
+  std::string out;
+  out.reserve(4 * (bytes.size() + 2) / 3);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t left = bytes.size() - i;
+    const std::uint32_t b = (std::uint32_t(bytes[i]) << 16) | (left > 1 ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
+                            (left > 2 ? std::uint32_t(bytes[i + 2]) : 0);
+    out += table[(b >> 18) & 63];
+    out += table[(b >> 12) & 63];
+    out += left > 1 ? table[(b >> 6) & 63] : '=';
+    out += left > 2 ? table[b & 63] : '=';
+  }
+  f << out << "\n";
+}
+
+template <class T>
+void write_array(std::ostream& f, const std::string& attributes, const std::vector<T>& values, int per_line,
+                 VtuFormat format) {
+  f << "<DataArray type=\"" << type_name(T{}) << "\" " << attributes << " format=\""
+    << (format == VtuFormat::binary ? "binary" : "ascii") << "\">\n";
+  if (format == VtuFormat::binary) {
+    write_base64(f, values);
+  } else {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      f << +values[i] << ((i + 1) % per_line == 0 || i + 1 == values.size() ? "\n" : " ");
+  }
+  f << "</DataArray>\n";
+}
+
+void write_data(std::ostream& f, const char* tag, const std::vector<VtuArray>& arrays, std::size_t count,
+                VtuFormat format) {
+  f << "<" << tag << ">\n";
+  for (const VtuArray& a : arrays) {
+    if (a.components < 1 || a.values.size() != count * a.components)
+      throw std::invalid_argument("write_vtu: array " + a.name + " has the wrong size");
+    write_array(f, "Name=\"" + a.name + "\" NumberOfComponents=\"" + std::to_string(a.components) + "\"", a.values,
+                a.components, format);
+  }
+  f << "</" << tag << ">\n";
+}
+}  // namespace
+
+void write_vtu(const std::string& path, const VtuGrid& grid, VtuFormat format) {
+  if (grid.points_per_cell < 1 || grid.connectivity.size() % grid.points_per_cell != 0)
+    throw std::invalid_argument("write_vtu: the connectivity is not whole cells");
+  for (int p : grid.connectivity)
+    if (p < 0 || p >= static_cast<int>(grid.points.size()))
+      throw std::invalid_argument("write_vtu: a cell names a point that does not exist");
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write " + path);
   f.precision(10);
-  const std::size_t n = mesh.nodes.size(), m = mesh.triangles.size();
+  const std::size_t n = grid.points.size(), m = grid.num_cells();
+  std::vector<double> xyz;
+  xyz.reserve(3 * n);
+  for (const auto& p : grid.points) xyz.insert(xyz.end(), {p.x(), p.y(), 0.0});
+  std::vector<std::int32_t> connectivity(grid.connectivity.begin(), grid.connectivity.end()), offsets(m);
+  for (std::size_t c = 0; c < m; ++c) offsets[c] = static_cast<std::int32_t>((c + 1) * grid.points_per_cell);
+  const std::vector<std::uint8_t> types(m, static_cast<std::uint8_t>(grid.cell_type));
+
   f << "<?xml version=\"1.0\"?>\n"
-    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-    << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << m << "\">\n"
-    << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const auto& p : mesh.nodes) f << p.x() << " " << p.y() << " 0\n";
-  f << "</DataArray>\n</Points>\n<Cells>\n"
-    << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& t : mesh.triangles) f << t[0] << " " << t[1] << " " << t[2] << "\n";
-  f << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t c = 1; c <= m; ++c) f << 3 * c << "\n";
-  f << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t c = 0; c < m; ++c) f << "5\n";  // VTK_TRIANGLE
-  f << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
-    << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (std::size_t a = 0; a < n; ++a) f << u[2 * a] << " " << u[2 * a + 1] << " 0\n";
-  f << "</DataArray>\n</PointData>\n<CellData>\n"
-    << "<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" "
-       "ComponentName0=\"sigma_xx\" ComponentName1=\"sigma_yy\" ComponentName2=\"sigma_xy\" "
-       "format=\"ascii\">\n";
-  for (const auto& s : stress) f << s[0] << " " << s[1] << " " << s[2] << "\n";
-  f << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt32\">\n"
+    << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << m << "\">\n<Points>\n";
+  write_array(f, "NumberOfComponents=\"3\"", xyz, 3, format);
+  f << "</Points>\n<Cells>\n";
+  write_array(f, "Name=\"connectivity\"", connectivity, grid.points_per_cell, format);
+  write_array(f, "Name=\"offsets\"", offsets, 1, format);
+  write_array(f, "Name=\"types\"", types, 1, format);
+  f << "</Cells>\n";
+  write_data(f, "PointData", grid.point_data, n, format);
+  write_data(f, "CellData", grid.cell_data, m, format);
+  f << "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   if (!f) throw std::runtime_error("write_vtu: writing " + path + " failed");
 }
 
-void write_curve_vtu(const std::string& path, const std::vector<double>& x, const std::vector<CurveField>& fields) {
-  for (const CurveField& field : fields)
-    if (field.value.size() != x.size()) throw std::invalid_argument("write_curve_vtu: " + field.name + " has the wrong size");
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write " + path);
-  f.precision(10);
-  const std::size_t n = x.size(), m = n > 0 ? n - 1 : 0;
-  f << "<?xml version=\"1.0\"?>\n"
-    << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-    << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << m << "\">\n"
-    << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (double xi : x) f << xi << " 0 0\n";
-  f << "</DataArray>\n</Points>\n<Cells>\n"
-    << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t c = 0; c < m; ++c) f << c << " " << c + 1 << "\n";
-  f << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (std::size_t c = 1; c <= m; ++c) f << 2 * c << "\n";
-  f << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (std::size_t c = 0; c < m; ++c) f << "3\n";  // VTK_LINE
-  f << "</DataArray>\n</Cells>\n<PointData>\n";
-  for (const CurveField& field : fields) {
-    f << "<DataArray type=\"Float64\" Name=\"" << field.name << "\" format=\"ascii\">\n";
-    for (double v : field.value) f << v << "\n";
-    f << "</DataArray>\n";
+double von_mises_plane_strain(const Eigen::Vector3d& s, double nu) {
+  const double zz = nu * (s[0] + s[1]);
+  return std::sqrt(0.5 * ((s[0] - s[1]) * (s[0] - s[1]) + (s[1] - zz) * (s[1] - zz) + (zz - s[0]) * (zz - s[0])) +
+                   3 * s[2] * s[2]);
+}
+
+namespace {
+VtuGrid triangle_grid(const Mesh& mesh, const Eigen::VectorXd& u) {
+  if (u.size() != mesh.num_dofs()) throw std::invalid_argument("write_vtu: u does not match the mesh");
+  VtuGrid g;
+  g.points = mesh.nodes;
+  for (const auto& t : mesh.triangles) g.connectivity.insert(g.connectivity.end(), t.begin(), t.end());
+  VtuArray displacement{"displacement", 3, {}};
+  for (int a = 0; a < mesh.num_nodes(); ++a) displacement.values.insert(displacement.values.end(), {u[2 * a], u[2 * a + 1], 0.0});
+  g.point_data.push_back(std::move(displacement));
+  return g;
+}
+}  // namespace
+
+VtuGrid body_grid(const Mesh& mesh, const Material& material, const Eigen::VectorXd& u) {
+  VtuGrid g = triangle_grid(mesh, u);
+  const std::vector<Eigen::Vector3d> stress = element_stresses(mesh, material, u);
+  const char* names[] = {"sigma_xx", "sigma_yy", "sigma_xy"};
+  for (int k = 0; k < 3; ++k) {
+    VtuArray a{names[k], 1, {}};
+    for (const auto& s : stress) a.values.push_back(s[k]);
+    g.cell_data.push_back(std::move(a));
   }
-  f << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  if (!f) throw std::runtime_error("write_curve_vtu: writing " + path + " failed");
+  VtuArray mises{"von_mises", 1, {}};
+  for (const auto& s : stress) mises.values.push_back(von_mises_plane_strain(s, material.nu()));
+  g.cell_data.push_back(std::move(mises));
+  return g;
+}
+
+void write_vtu(const std::string& path, const Mesh& mesh, const Eigen::VectorXd& u,
+               const std::vector<Eigen::Vector3d>& stress) {
+  if (stress.size() != mesh.triangles.size()) throw std::invalid_argument("write_vtu: field sizes do not match the mesh");
+  VtuGrid g = triangle_grid(mesh, u);
+  VtuArray s{"stress", 3, {}};
+  for (const auto& t : stress) s.values.insert(s.values.end(), {t[0], t[1], t[2]});
+  g.cell_data.push_back(std::move(s));
+  write_vtu(path, g, VtuFormat::ascii);
+}
+
+void write_curve_vtu(const std::string& path, const std::vector<double>& x, const std::vector<CurveField>& fields,
+                     VtuFormat format) {
+  VtuGrid g;
+  g.cell_type = 3;  // VTK_LINE
+  g.points_per_cell = 2;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    g.points.emplace_back(x[i], 0.0);
+    if (i > 0) g.connectivity.insert(g.connectivity.end(), {static_cast<int>(i) - 1, static_cast<int>(i)});
+  }
+  for (const CurveField& field : fields) {
+    if (field.value.size() != x.size()) throw std::invalid_argument("write_curve_vtu: " + field.name + " has the wrong size");
+    g.point_data.push_back({field.name, 1, field.value});
+  }
+  write_vtu(path, g, format);
 }
 
 }  // namespace mortar
