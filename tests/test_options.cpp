@@ -52,6 +52,28 @@ TEST(Options, given_tells_set_options_from_defaults) {
   EXPECT_FALSE(p.given("unknown"));
 }
 
+TEST(Options, quick_sets_small_sizes_and_refuses_them_given_as_well) {
+  const auto run = [](std::vector<const char*> args, int& n, int& levels) {
+    args.insert(args.begin(), "demo");
+    bool quick = false;
+    OptionParser p("demo", "a demo");
+    p.add_int("n0", n, "count", Range::positive());
+    p.add_int("levels", levels, "count", Range::positive());
+    p.add_flag("quick", quick, "small");
+    p.parse(static_cast<int>(args.size()), args.data());
+    p.apply_quick(quick, {{"n0", n, 4}, {"levels", levels, 3}});
+  };
+  int n = 12, levels = 6;
+  run({"--n0", "7"}, n, levels);
+  EXPECT_EQ(n, 7);
+  EXPECT_EQ(levels, 6);
+  run({"--quick"}, n, levels);
+  EXPECT_EQ(n, 4);
+  EXPECT_EQ(levels, 3);
+  EXPECT_EXIT(run({"--quick", "--levels", "5"}, n, levels), ::testing::ExitedWithCode(2),
+              ::testing::HasSubstr("--levels: cannot be combined with --quick"));
+}
+
 TEST(Options, parse_number_rejects_junk_nan_and_inf) {
   double v = 0;
   EXPECT_TRUE(parse_number("1e-3", v));

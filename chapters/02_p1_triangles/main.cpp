@@ -52,12 +52,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 4, levels = 4; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
-  if (o.quick) {
-    for (const char* name : {"n0", "levels"})
-      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
-    o.n0 = 4;
-    o.levels = 4;
-  }
+  parser.apply_quick(o.quick, {{"n0", o.n0, 4}, {"levels", o.levels, 4}});
   // in floating point: n0 2^(levels-1) cannot wrap before it is compared
   const double n = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
   if (n > max_cells_per_side)

@@ -88,18 +88,12 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
   o.compare = !o.no_compare;
-  if (o.quick)
-    for (const char* name : {"n0", "levels"})
-      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
   // the signorini scene measures local rates, which need more levels, each one cheaper
   if (o.scene == "signorini") {
     if (!parser.given("n0")) o.n0 = 8;
     if (!parser.given("levels")) o.levels = 6;
   }
-  if (o.quick) {
-    o.n0 = 8;
-    o.levels = 3;
-  }
+  parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 3}});  // after the scene's defaults
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
   // small displacements: the imposed one must be small against the body it compresses
   if (std::fabs(o.delta) >= o.H1)

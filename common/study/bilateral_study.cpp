@@ -62,12 +62,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
-  if (o.quick) {
-    for (const char* name : {"n0", "levels"})
-      if (parser.given(name)) parser.fail(name, "cannot be combined with --quick, which sets it");
-    o.n0 = 6;
-    o.levels = 3;
-  }
+  parser.apply_quick(o.quick, {{"n0", o.n0, 6}, {"levels", o.levels, 3}});
   check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
   const FinestSize size = finest_size(o);
   if (size.largest() > max_cells_per_side || size.dofs() > max_dofs) {

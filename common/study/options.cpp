@@ -187,6 +187,14 @@ bool OptionParser::given(const std::string& name) const {
   return std::find(given_.begin(), given_.end(), name) != given_.end();
 }
 
+void OptionParser::apply_quick(bool quick, std::initializer_list<QuickSize> sizes) const {
+  if (!quick) return;
+  for (const QuickSize& s : sizes) {
+    if (given(s.name)) fail(s.name, "cannot be combined with --quick, which sets it");
+    s.target = s.value;
+  }
+}
+
 std::vector<std::pair<std::string, std::string>> OptionParser::values() const {
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto& o : options_)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,15 @@ class OptionParser {
   // Whether the command line set this option (so a program can choose defaults that
   // depend on other options, such as the scene).
   bool given(const std::string& name) const;
+
+  // --quick (small sizes for tests): when quick, sets each listed int option to its small
+  // value, and refuses (status 2) any of them given as well, which --quick would override.
+  struct QuickSize {
+    const char* name;
+    int& target;
+    int value;
+  };
+  void apply_quick(bool quick, std::initializer_list<QuickSize> sizes) const;
 
   // Prints "<program>: --name: message" on stderr and exits with status 2.
   [[noreturn]] void fail(const std::string& name, const std::string& message) const;

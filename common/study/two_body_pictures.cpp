@@ -142,14 +142,10 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
 std::vector<double> curve_at(const InterfaceCurve& curve, const std::vector<double>& x) {
   if (curve.x.size() < 2 || curve.value.size() != curve.x.size())
     throw std::invalid_argument("curve_at: the curve needs two points or more, one value each");
+  const InterfaceTrace trace{curve.x, {}};  // the curve's points as a 1D grid carrying P1 hats
   std::vector<double> out;
   out.reserve(x.size());
-  for (double xi : x) {
-    const auto it = std::upper_bound(curve.x.begin(), curve.x.end(), xi);
-    const std::size_t e = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - curve.x.begin(), 1), curve.x.size() - 1) - 1;
-    const double s = (xi - curve.x[e]) / (curve.x[e + 1] - curve.x[e]);
-    out.push_back((1 - s) * curve.value[e] + s * curve.value[e + 1]);
-  }
+  for (double xi : x) out.push_back(trace.evaluate(curve.value, xi));
   return out;
 }
 
