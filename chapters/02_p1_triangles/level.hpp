@@ -5,6 +5,7 @@
 
 #include "common/fem/errors.hpp"
 #include "common/fem/mesh.hpp"
+#include "common/linalg/physical_limit.hpp"
 #include "common/linalg/spd_solver.hpp"
 #include "manufactured_solution.hpp"
 
@@ -22,6 +23,7 @@ struct LevelResult {
   int dofs = 0;               // all nodal dofs, Dirichlet ones included (2 per node)
   double time_s = 0;          // assembly + loads + elimination + factorization + solve
   double limit_s = 0;         // assembly + Cholesky factorization + solve of K alone
+  mortar::TimedLevel timing{};  // both, with their spread, phases and memory peaks
   mortar::ErrorNorms norms;
 };
 

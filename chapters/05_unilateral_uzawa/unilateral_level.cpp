@@ -1,6 +1,7 @@
 #include "unilateral_level.hpp"
 
 #include <limits>
+#include <optional>
 
 #include "common/contact/bilateral_contact.hpp"
 #include "common/fem/dirichlet.hpp"
@@ -35,33 +36,48 @@ UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
 UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const UnilateralSetup& setup,
                                        const mortar::ManufacturedContact& exact) {
   UnilateralLevel r{std::move(bodies), {}, {}, {}, {}, {}, {}, {}, {}};
-  const mortar::Stopwatch clock;  // everything but the mesh
-  // 1. The scene: loads, Dirichlet data and the initial gap g(x) >= 0 (scenes.cpp).
-  const UnilateralScene scene = make_scene(setup.scene, r.bodies, exact);
-  r.gap = scene.gap;
-  // 2. K of both bodies, block diagonal: the bodies only meet through B.
-  const mortar::SparseMatrix K = r.bodies.stiffness();
-  // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
-  //    D and M (chapter 4's level.cpp takes these steps one by one).
-  r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
-  // 4. The constraint rows of the chosen matching: chapter 3's pointwise rows at the nodes
-  //    xi^1 or chapter 4's rows D, M against M_h^1, attached to the normal dofs as B.
-  r.constraints = mortar::constraint_rows(r.bodies, r.gamma, mortar::matching_rows(r.gamma, setup.matching),
-                                          scene.data.prescribed_mask(r.bodies.num_dofs()));
-  // 5. The tested gap G: g at the nodes xi^1 (pointwise) or int g psi_i (integral), so that the
-  //    discrete convex set K_h^P or K_h^I is B u <= G.
-  const Eigen::VectorXd G = mortar::tested_gap(r.gamma, r.constraints, scene.gap);
+  std::optional<UnilateralScene> scene;
+  // Steps 1-7, timed: everything but the mesh.
+  const auto solve = [&] {
+    // 1. The scene: loads, Dirichlet data and the initial gap g(x) >= 0 (scenes.cpp).
+    const mortar::ProfilePhase setup_phase("scene, constraints, elimination");
+    scene = make_scene(setup.scene, r.bodies, exact);
+    r.gap = scene->gap;
+    // 2. K of both bodies, block diagonal: the bodies only meet through B.
+    mortar::SparseMatrix K;
+    {
+      const mortar::ProfilePhase phase("assembly");
+      K = r.bodies.stiffness();
+    }
+    // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
+    //    D and M (chapter 4's level.cpp takes these steps one by one).
+    r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
+    // 4. The constraint rows of the chosen matching: chapter 3's pointwise rows at the nodes
+    //    xi^1 or chapter 4's rows D, M against M_h^1, attached to the normal dofs as B.
+    r.constraints = mortar::constraint_rows(r.bodies, r.gamma, mortar::matching_rows(r.gamma, setup.matching),
+                                            scene->data.prescribed_mask(r.bodies.num_dofs()));
+    // 5. The tested gap G: g at the nodes xi^1 (pointwise) or int g psi_i (integral), so that
+    //    the discrete convex set K_h^P or K_h^I is B u <= G.
+    const Eigen::VectorXd G = mortar::tested_gap(r.gamma, r.constraints, scene->gap);
 
-  // 6. Dirichlet elimination: the prescribed dofs leave the system; their values move into f
-  //    and into the gap, G - B u_d.
-  const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene.data.F, scene.data.dirichlet);
-  const mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
-  // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
-  //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
-  r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
-  r.u = system.expand(r.solution.u);
-  r.time_s = clock.seconds();
-  if (setup.measure_limit) r.limit_s = mortar::two_body_limit(r.bodies, scene.data);
+    // 6. Dirichlet elimination: the prescribed dofs leave the system; their values move into f
+    //    and into the gap, G - B u_d.
+    const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene->data.F, scene->data.dirichlet);
+    const mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
+    // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
+    //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
+    r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
+    r.u = system.expand(r.solution.u);
+  };
+  if (setup.measure_limit) {
+    r.timing = mortar::time_against_limit(solve, [&] { return mortar::two_body_limit_matrix(r.bodies, scene->data); });
+    r.time_s = r.timing.time_s;
+    r.limit_s = r.timing.limit_s;
+  } else {
+    const mortar::Stopwatch clock;
+    solve();
+    r.time_s = clock.seconds();
+  }
 
   // 8. What the solve means on Gamma_c: pressure, jump, contact zone, penetration, total force.
   r.pressure = mortar::contact_pressure(r.gamma, r.constraints, r.solution.lambda);

@@ -6,6 +6,7 @@
 #include "common/contact/contact_fields.hpp"
 #include "common/contact/contact_solvers.hpp"
 #include "common/fem/errors.hpp"
+#include "common/linalg/physical_limit.hpp"
 #include "scenes.hpp"
 
 namespace chapter05 {
@@ -30,6 +31,7 @@ struct UnilateralLevel {
   std::function<double(double)> gap;
   double total_force = 0;
   double time_s = 0, limit_s = 0;
+  mortar::TimedLevel timing{};  // both, with their spread, phases and memory peaks (measure_limit)
   double h1 = 0, h2 = 0;
   // The largest pointwise violation of (9), max ([u_h.n] - g) over Gamma_c, and where: the
   // integral constraints of K_h^I only bound averages of it, so it can stay positive, by

@@ -23,11 +23,13 @@ BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scen
   return s;
 }
 
+SparseMatrix two_body_limit_matrix(const TwoBodies& bodies, const SceneData& scene) {
+  const SparseMatrix K = bodies.stiffness();
+  return eliminate_dirichlet(K, Eigen::VectorXd::Zero(K.rows()), scene.dirichlet).K;
+}
+
 double two_body_limit(const TwoBodies& bodies, const SceneData& scene) {
-  return measure_physical_limit([&] {
-    const SparseMatrix K = bodies.stiffness();
-    return eliminate_dirichlet(K, Eigen::VectorXd::Zero(K.rows()), scene.dirichlet).K;
-  });
+  return measure_physical_limit([&] { return two_body_limit_matrix(bodies, scene); });
 }
 
 }  // namespace mortar

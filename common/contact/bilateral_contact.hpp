@@ -48,7 +48,8 @@ BilateralSolution solve_bilateral(const TwoBodies& bodies, const SceneData& scen
 
 // The physical limit of a two-body level (README.md, "Speed"): assemble K of both bodies,
 // eliminate the Dirichlet dofs, one Cholesky factorization and one solve; the scene must
-// hold each body.
+// hold each body. two_body_limit_matrix is that K (for time_against_limit).
+SparseMatrix two_body_limit_matrix(const TwoBodies& bodies, const SceneData& scene);
 double two_body_limit(const TwoBodies& bodies, const SceneData& scene);
 
 }  // namespace mortar

@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+
+#include "common/study/profile.hpp"
 #include <stdexcept>
 
 namespace mortar {
@@ -32,20 +34,34 @@ double complementarity_residual(const Eigen::VectorXd& lambda, const Eigen::Vect
 
 namespace {
 
-// S = B K^{-1} B^T, applied through cached columns (one K solve per column, in blocks).
+// S = B K^{-1} B^T, the operator both solvers work with.
+//
+// With CHOLMOD, S is formed whole, as a Schur complement on the contact line: the unknowns c
+// that B touches (normal dofs on Gamma_c) are ordered last in the factorization of K, so the
+// trailing block L_c of the factor is the Cholesky factor of the Schur complement of K on c,
+// (K^{-1})_cc = L_c^{-T} L_c^{-1}, and S = B_c (K^{-1})_cc B_c^T = W^T W with W = L_c^{-1} B_c^T:
+// dense work of the size of the contact line, and no solve with K at all.
+// Without CHOLMOD (Eigen's LDLT), a column S e_i costs one solve with K: columns are computed
+// on demand, in blocks, and cached.
 class DualOperator {
  public:
   DualOperator(const ContactProblem& p, SpdBackend backend) : B_(p.B), solver_(backend) {
-    solver_.factorize(p.K);
-    b_ = B_ * solver_.solve(p.f) - p.G;
     Bt_ = B_.transpose();
+    if (backend == SpdBackend::cholmod) {
+      solver_.factorize_with_last(p.K, contact_unknowns());
+      form_schur_complement();
+    } else {
+      solver_.factorize(p.K);
+    }
+    b_ = B_ * solver_.solve(p.f) - p.G;
   }
   const Eigen::VectorXd& b() const { return b_; }
-  int columns() const { return static_cast<int>(cache_.size()); }
+  int columns() const { return whole_ ? size() : static_cast<int>(cache_.size()); }
   int size() const { return static_cast<int>(B_.rows()); }
 
   // S x for x with few nonzeros: only their columns are needed.
   Eigen::VectorXd apply(const Eigen::VectorXd& x) {
+    if (whole_) return S_.selfadjointView<Eigen::Lower>() * x;
     std::vector<int> missing;
     for (int i = 0; i < size(); ++i)
       if (x[i] != 0.0 && cache_.find(i) == cache_.end()) missing.push_back(i);
@@ -55,35 +71,32 @@ class DualOperator {
       if (x[i] != 0.0) y += x[i] * cache_.at(i);
     return y;
   }
-  // Makes sure the columns of these rows are cached, computing the missing ones in blocks.
-  void prefetch(const std::vector<int>& rows) {
+  // The dense block S_AA (computing the missing columns).
+  Eigen::MatrixXd block(const std::vector<int>& rows) {
+    const int a = static_cast<int>(rows.size());
+    Eigen::MatrixXd S_AA(a, a);
+    if (whole_) {
+      for (int c = 0; c < a; ++c)
+        for (int r = c; r < a; ++r) S_AA(r, c) = S_AA(c, r) = S_(std::max(rows[r], rows[c]), std::min(rows[r], rows[c]));
+      return S_AA;
+    }
     std::vector<int> missing;
     for (int i : rows)
       if (cache_.find(i) == cache_.end()) missing.push_back(i);
     compute(missing);
-  }
-  const Eigen::VectorXd& column(int i) {
-    if (cache_.find(i) == cache_.end()) compute({i});
-    return cache_.at(i);
-  }
-  // The dense block S_AA from cached columns (computing the missing ones).
-  Eigen::MatrixXd block(const std::vector<int>& rows) {
-    prefetch(rows);
-    const int a = static_cast<int>(rows.size());
-    Eigen::MatrixXd S_AA(a, a);
     for (int c = 0; c < a; ++c) {
       const Eigen::VectorXd& col = cache_.at(rows[c]);
       for (int r = 0; r < a; ++r) S_AA(r, c) = col[rows[r]];
     }
     return S_AA;
   }
-  // ||S|| by power iteration on full vectors: each step one solve with K.
+  // ||S|| by power iteration on full vectors (each step one S x, a solve with K without S).
   double norm_estimate(int steps = 12) {
     if (size() == 0) return 0.0;
     Eigen::VectorXd x = Eigen::VectorXd::Ones(size()).normalized();
     double estimate = 0;
     for (int k = 0; k < steps; ++k) {
-      const Eigen::VectorXd y = B_ * solver_.solve(Eigen::VectorXd(Bt_ * x));
+      const Eigen::VectorXd y = whole_ ? apply(x) : Eigen::VectorXd(B_ * solver_.solve(Eigen::VectorXd(Bt_ * x)));
       estimate = x.dot(y);
       if (!(y.norm() > 0)) break;
       x = y.normalized();
@@ -95,7 +108,29 @@ class DualOperator {
   }
 
  private:
+  // The unknowns B touches, in increasing order.
+  std::vector<int> contact_unknowns() const {
+    std::vector<int> c;
+    for (int j = 0; j < B_.outerSize(); ++j)
+      if (B_.col(j).nonZeros() > 0) c.push_back(j);
+    return c;
+  }
+  void form_schur_complement() {
+    const ProfilePhase phase("dual operator S");
+    const SpdSolver::TrailingFactor t = solver_.trailing_factor();
+    const int m = size(), nc = static_cast<int>(t.dofs.size());
+    std::vector<int> index(B_.cols(), -1);
+    for (int k = 0; k < nc; ++k) index[t.dofs[k]] = k;
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, m);  // B_c^T, then L_c^{-1} B_c^T
+    for (int j = 0; j < B_.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(B_, j); it; ++it) W(index[j], it.row()) = it.value();
+    t.L.triangularView<Eigen::Lower>().solveInPlace(W);
+    S_ = Eigen::MatrixXd::Zero(m, m);
+    S_.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());  // lower triangle of W^T W
+    whole_ = true;
+  }
   void compute(const std::vector<int>& rows) {
+    const ProfilePhase phase("dual operator S");
     constexpr int block = 64;  // right-hand sides per pass through the factor
     for (std::size_t start = 0; start < rows.size(); start += block) {
       const int k = static_cast<int>(std::min<std::size_t>(block, rows.size() - start));
@@ -109,6 +144,8 @@ class DualOperator {
   SparseMatrix B_, Bt_;
   SpdSolver solver_;
   Eigen::VectorXd b_;
+  bool whole_ = false;
+  Eigen::MatrixXd S_;  // whole_: S, its lower triangle
   std::map<int, Eigen::VectorXd> cache_;
 };
 
@@ -404,8 +441,13 @@ ContactSolution solve_contact(const ContactProblem& p, const ContactSolverOption
   if (p.B.rows() != p.G.size() || p.B.cols() != p.K.rows() || p.f.size() != p.K.rows())
     throw std::invalid_argument("solve_contact: the sizes of K, f, B and G disagree");
   DualOperator S(p, o.backend);
-  const double S_norm = S.norm_estimate();
-  ContactSolution sol = o.kind == ContactSolverKind::uzawa ? uzawa(S, o, S_norm) : pdas(S, o, S_norm);
+  ContactSolution sol;
+  double S_norm = 0;
+  {
+    const ProfilePhase phase(contact_solver_name(o.kind) + " iteration");
+    S_norm = S.norm_estimate();
+    sol = o.kind == ContactSolverKind::uzawa ? uzawa(S, o, S_norm) : pdas(S, o, S_norm);
+  }
   sol.S_norm = S_norm;
   sol.columns = S.columns();
   sol.u = S.displacement(p, sol.lambda);

@@ -73,4 +73,22 @@ std::string memory_shortfall(double dofs, double bytes_per_dof, const MachineMem
          ": use fewer --levels or a smaller --n0";
 }
 
+void reset_peak_memory() {
+  std::ofstream clear("/proc/self/clear_refs");
+  if (clear) clear << "5";  // 5: reset the peak resident set size
+}
+
+double peak_memory_bytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) {
+      std::istringstream fields(line.substr(6));
+      double kilobytes = 0;
+      fields >> kilobytes;
+      return kilobytes * 1024;
+    }
+  return 0.0;
+}
+
 }  // namespace mortar

@@ -37,4 +37,10 @@ double mem_available_bytes(const std::string& meminfo);
 // they need and what the machine has (for OptionParser::fail).
 std::string memory_shortfall(double dofs, double bytes_per_dof, const MachineMemory& machine);
 
+// The resident-set peak of this process (VmHWM of /proc/self/status), and setting it back to
+// the present resident set (Linux's /proc/self/clear_refs), so that the peak of one step can
+// be read. 0 where the system does not say.
+void reset_peak_memory();
+double peak_memory_bytes();
+
 }  // namespace mortar

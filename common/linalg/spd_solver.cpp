@@ -1,10 +1,13 @@
 #include "common/linalg/spd_solver.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "common/study/profile.hpp"
 
 #ifdef MORTAR_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -50,16 +53,90 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
   // out of memory (L NULL, or L without numerical values) would pass as a success and crash on
   // the first read of L->x. CHOLMOD reports such failures in cholmod_common::status: check it
   // after each step and throw with the size and what failed.
-  void compute_checked(const SparseMatrix& K) {
-    cholmod().print = 0;  // the exception below says it; CHOLMOD's own line would repeat it
-    analyzePattern(K);
-    check_status("analysis", K.rows());
-    if (m_cholmodFactor == nullptr) fail("analysis", "no factor returned", K.rows());
+  // `given` empty: CHOLMOD orders (automatic or AMD only); else the factor's order is `given`.
+  void compute_checked(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given) {
+    cholmod_common& c = cholmod();
+    c.print = 0;  // the exception below says it; CHOLMOD's own line would repeat it
+    {
+      const ProfilePhase phase("analysis");
+      c.nmethods = ordering == SpdOrdering::automatic && given.empty() ? 0 : 1;
+      c.method[0].ordering = given.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
+      if (given.empty()) analyzePattern(K);
+      else analyze_given(K, given);
+      check_status("analysis", K.rows());
+      if (m_cholmodFactor == nullptr) fail("analysis", "no factor returned", K.rows());
+    }
+    const ProfilePhase phase("factorization");
     factorize(K);
     check_status("factorization", K.rows());
     if (m_cholmodFactor->x == nullptr && m_cholmodFactor->minor == m_cholmodFactor->n)
       fail("factorization", "no numerical values in the factor", K.rows());
   }
+  std::string ordering_used() {
+    const cholmod_common& c = cholmod();
+    switch (c.method[c.selected].ordering) {
+      case CHOLMOD_GIVEN: return "given";
+      case CHOLMOD_AMD: return "amd";
+      case CHOLMOD_METIS: return "metis";
+      case CHOLMOD_NESDIS: return "nesdis";
+      default: return "other";
+    }
+  }
+  double factor_nonzeros() { return cholmod().lnz; }
+
+  // AMD's ordering of the symmetric matrix whose lower triangle is A.
+  std::vector<int> amd_order(const SparseMatrix& A) {
+    cholmod_sparse a = Eigen::viewAsCholmod(A.selfadjointView<Eigen::Lower>());
+    std::vector<int> order(static_cast<std::size_t>(A.rows()));
+    if (!cholmod_amd(&a, nullptr, 0, order.data(), &cholmod())) check_status("AMD ordering", A.rows());
+    return order;
+  }
+
+  // The trailing block of L on the positions of `dofs` (see SpdSolver::trailing_factor). Valid
+  // only if no column of L in that set has a row outside it, i.e. the set is closed under the
+  // elimination tree's parents: then L^{-1} maps vectors on the set to vectors on the set.
+  SpdSolver::TrailingFactor trailing(const std::vector<int>& dofs) const {
+    const cholmod_factor* L = m_cholmodFactor;
+    if (L == nullptr || !L->is_super || L->itype != CHOLMOD_INT)
+      throw std::logic_error("SpdSolver::trailing_factor: no supernodal factor");
+    const auto* perm = static_cast<const int*>(L->Perm);
+    const Eigen::Index n = static_cast<Eigen::Index>(L->n);
+    std::vector<int> position(n);
+    for (Eigen::Index k = 0; k < n; ++k) position[perm[k]] = static_cast<int>(k);
+    std::vector<int> positions;
+    for (int d : dofs) positions.push_back(position[d]);
+    std::sort(positions.begin(), positions.end());
+    std::vector<int> index(n, -1);  // position -> row of L_c
+    SpdSolver::TrailingFactor t;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      index[positions[i]] = static_cast<int>(i);
+      t.dofs.push_back(perm[positions[i]]);
+    }
+    const int m = static_cast<int>(positions.size());
+    t.L = Eigen::MatrixXd::Zero(m, m);
+    const auto* super = static_cast<const int*>(L->super);
+    const auto* pi = static_cast<const int*>(L->pi);
+    const auto* px = static_cast<const int*>(L->px);
+    const auto* rows_of = static_cast<const int*>(L->s);
+    const auto* x = static_cast<const double*>(L->x);
+    for (std::size_t s = 0; s < L->nsuper; ++s) {
+      const int rows = pi[s + 1] - pi[s];
+      for (int k = super[s]; k < super[s + 1]; ++k) {
+        const int col = index[k];
+        if (col < 0) continue;
+        const int j = k - super[s];
+        for (int r = j; r < rows; ++r) {  // the rows at and below the diagonal
+          const int row = rows_of[pi[s] + r];
+          const double value = x[px[s] + static_cast<std::size_t>(j) * rows + r];
+          if (index[row] >= 0) t.L(index[row], col) = value;
+          else if (value != 0.0)
+            throw std::logic_error("SpdSolver::trailing_factor: the unknowns are not last in the factor");
+        }
+      }
+    }
+    return t;
+  }
+
   // After a solve: the solve itself can run out of memory (Eigen then leaves x untouched).
   void check_solve(Eigen::Index n) {
     check_status("solve", n);
@@ -74,6 +151,16 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
   }
 
  private:
+  // Eigen's analyzePattern() with a given permutation (CHOLMOD's analyze_p).
+  void analyze_given(const SparseMatrix& K, std::vector<int>& given) {
+    if (m_cholmodFactor != nullptr) cholmod_free_factor(&m_cholmodFactor, &cholmod());
+    cholmod_sparse A = Eigen::viewAsCholmod(K.selfadjointView<Eigen::Lower>());
+    m_cholmodFactor = cholmod_analyze_p(&A, given.data(), nullptr, 0, &cholmod());
+    m_isInitialized = true;
+    m_info = Eigen::Success;
+    m_analysisIsOk = true;
+    m_factorizationIsOk = false;
+  }
   void check_status(const char* step, Eigen::Index n) {
     const int status = cholmod().status;
     if (status == CHOLMOD_OUT_OF_MEMORY)
@@ -121,6 +208,7 @@ struct SpdSolver::Impl {
 #endif
   bool factorized = false;
   Eigen::Index size = 0;
+  std::vector<int> last;  // factorize_with_last: the unknowns ordered last
 };
 
 SpdSolver::SpdSolver(SpdBackend backend) : backend_(backend), impl_(std::make_unique<Impl>()) {
@@ -131,18 +219,81 @@ SpdSolver::~SpdSolver() = default;
 SpdSolver::SpdSolver(SpdSolver&&) noexcept = default;
 SpdSolver& SpdSolver::operator=(SpdSolver&&) noexcept = default;
 
-void SpdSolver::factorize(const SparseMatrix& K) {
+void SpdSolver::factorize(const SparseMatrix& K, SpdOrdering ordering) { factorize(K, ordering, {}); }
+
+void SpdSolver::factorize_with_last(const SparseMatrix& K, const std::vector<int>& last) {
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (backend_ == SpdBackend::cholmod) {
+    const ProfilePhase phase("analysis");
+    // The rest in AMD's order, computed on K restricted to the rest, then `last`.
+    const Eigen::Index n = K.rows();
+    std::vector<int> rest_index(n, 0);
+    for (int d : last) rest_index.at(d) = -1;
+    std::vector<int> rest;
+    for (Eigen::Index d = 0; d < n; ++d)
+      if (rest_index[d] == 0) {
+        rest_index[d] = static_cast<int>(rest.size());
+        rest.push_back(static_cast<int>(d));
+      }
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int k = 0; k < K.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(K, k); it; ++it)
+        if (it.row() >= it.col() && rest_index[it.row()] >= 0 && rest_index[it.col()] >= 0)
+          entries.emplace_back(rest_index[it.row()], rest_index[it.col()], it.value());
+    SparseMatrix K_rest(static_cast<Eigen::Index>(rest.size()), static_cast<Eigen::Index>(rest.size()));
+    K_rest.setFromTriplets(entries.begin(), entries.end());
+    std::vector<int> order;
+    for (int k : impl_->cholmod.amd_order(K_rest)) order.push_back(rest[k]);
+    order.insert(order.end(), last.begin(), last.end());
+    impl_->last = last;
+    factorize(K, SpdOrdering::amd, order);
+    return;
+  }
+#endif
+  factorize(K, SpdOrdering::amd, {});
+}
+
+SpdSolver::TrailingFactor SpdSolver::trailing_factor() const {
+  if (!impl_->factorized || impl_->last.empty())
+    throw std::logic_error("SpdSolver::trailing_factor called without factorize_with_last");
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (backend_ == SpdBackend::cholmod) return impl_->cholmod.trailing(impl_->last);
+#endif
+  throw std::logic_error("SpdSolver::trailing_factor needs CHOLMOD");
+}
+
+std::string SpdSolver::ordering_used() const {
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (backend_ == SpdBackend::cholmod && impl_->factorized) return impl_->cholmod.ordering_used();
+#endif
+  return backend_ == SpdBackend::cholmod ? "none" : "amd (Eigen)";
+}
+
+double SpdSolver::factor_nonzeros() const {
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (backend_ == SpdBackend::cholmod && impl_->factorized) return impl_->cholmod.factor_nonzeros();
+#endif
+  return impl_->factorized && backend_ == SpdBackend::simplicial_ldlt
+             ? static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros())
+             : 0.0;
+}
+
+void SpdSolver::factorize(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given) {
   if (K.rows() != K.cols())
     throw std::invalid_argument("SpdSolver: K is " + std::to_string(K.rows()) + " x " +
                                 std::to_string(K.cols()));
   impl_->factorized = false;
   impl_->size = K.rows();
+  if (given.empty()) impl_->last.clear();
   const Eigen::VectorXd diagonal = K.diagonal();
   if (!(diagonal.minCoeff() > 0))
     throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" +
                              std::to_string(diagonal.minCoeff()) + "): it is not positive definite");
   if (backend_ == SpdBackend::simplicial_ldlt) {
-    impl_->ldlt.compute(K);
+    {
+      const ProfilePhase phase("factorization");
+      impl_->ldlt.compute(K);
+    }
     if (impl_->ldlt.info() != Eigen::Success)
       throw std::runtime_error("SpdSolver (SimplicialLDLT): factorization of the " +
                                std::to_string(K.rows()) + " x " + std::to_string(K.rows()) +
@@ -157,7 +308,7 @@ void SpdSolver::factorize(const SparseMatrix& K) {
     }
   } else {
 #ifdef MORTAR_HAVE_CHOLMOD
-    impl_->cholmod.compute_checked(K);
+    impl_->cholmod.compute_checked(K, ordering, std::move(given));
     if (impl_->cholmod.info() != Eigen::Success)
       throw std::runtime_error("SpdSolver (CHOLMOD): K is not positive definite (" +
                                std::to_string(K.rows()) +
@@ -175,6 +326,7 @@ Eigen::MatrixXd SpdSolver::solve_many(const Eigen::MatrixXd& rhs) const {
   if (rhs.rows() != impl_->size)
     throw std::invalid_argument("SpdSolver::solve: rhs has " + std::to_string(rhs.rows()) +
                                 " rows, K has " + std::to_string(impl_->size));
+  const ProfilePhase phase("solves");
   Eigen::MatrixXd x;
 #ifdef MORTAR_HAVE_CHOLMOD
   if (backend_ == SpdBackend::cholmod) {

@@ -6,12 +6,19 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/fem/p1_elasticity.hpp"
 
 namespace mortar {
 
 enum class SpdBackend { cholmod, simplicial_ldlt };
+
+// The fill-reducing ordering of CHOLMOD's analysis:
+//  - automatic: CHOLMOD's own choice: AMD, and METIS and nested dissection as well whenever
+//    AMD's factor looks costly (then the analysis alone can take ten times AMD's);
+//  - amd: AMD only, chosen once: the analysis costs what the physical limit's does.
+enum class SpdOrdering { automatic, amd };
 
 bool cholmod_available();
 SpdBackend fastest_spd_backend();  // CHOLMOD when built in, else SimplicialLDLT
@@ -26,13 +33,31 @@ class SpdSolver {
 
   // Factorizes K (lower triangle is read). Throws std::runtime_error naming the problem when
   // K is not positive definite, e.g. a body left free to move rigidly.
-  void factorize(const SparseMatrix& K);
+  void factorize(const SparseMatrix& K, SpdOrdering ordering = SpdOrdering::automatic);
+  // The same with the unknowns `last` ordered after all others (CHOLMOD only): AMD orders the
+  // rest, `last` is appended. Then the trailing block of the factor is the Cholesky factor of
+  // the Schur complement of K on `last`; trailing_factor() returns it.
+  void factorize_with_last(const SparseMatrix& K, const std::vector<int>& last);
+
+  // After factorize_with_last: the dense lower-triangular L_c with
+  //     (K^{-1})_{cc} = L_c^{-T} L_c^{-1},   c = dofs (the unknowns `last`, in the factor's order),
+  // read off the factor: no solve. |c| x |c| doubles, the size of the contact line, not the mesh.
+  struct TrailingFactor {
+    std::vector<int> dofs;
+    Eigen::MatrixXd L;
+  };
+  TrailingFactor trailing_factor() const;
+  // The ordering the analysis kept ("amd", "metis", "nesdis", "given", ...) and the nonzeros of
+  // the factor, for --profile.
+  std::string ordering_used() const;
+  double factor_nonzeros() const;
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   // Several right-hand sides at once (the columns of rhs): one pass through the factor.
   Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs) const;
   SpdBackend backend() const { return backend_; }
 
  private:
+  void factorize(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given);
   struct Impl;
   SpdBackend backend_;
   std::unique_ptr<Impl> impl_;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "common/linalg/physical_limit.hpp"
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/contact_fields.hpp"
 #include "common/study/convergence_study.hpp"
@@ -66,6 +67,7 @@ struct BilateralLevel {
   InterfaceCurve pressure, jump;  // solution.pressure and solution.jump
   double h1 = 0, h2 = 0;
   double time_s = 0, limit_s = 0;
+  TimedLevel timing{};  // both, with their spread, phases and memory peaks
   double err_energy = 0, err_l2 = 0, err_jump = 0;
   PressureErrors pressure_errors{};  // absolute; row() divides by the norms of the exact p
   Row row() const;
