@@ -21,6 +21,7 @@
 
 #include "common/study/convergence_study.hpp"
 #include "common/study/options.hpp"
+#include "common/study/timing_report.hpp"
 #include "common/interface/trace_transfer.hpp"
 #include "figures.hpp"
 #include "trace_functions.hpp"
@@ -39,6 +40,7 @@ struct Options {
   std::string out = "results/ch01_interface_traces";
   bool quick = false;
   bool no_plot = false;
+  bool profile = false;  // print where the finest level's time goes
 };
 
 // The sweep puts up to 10 n1 elements on side 2 (ratio 1/10): keep it within a minute.
@@ -57,6 +59,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets levels = 4)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
   parser.parse(argc, argv);
   if (o.quick) o.levels = 4;
   if (static_cast<long long>(o.n0) << (o.levels - 1) > max_side1_elements)
@@ -222,9 +225,6 @@ int main(int argc, char** argv) {
     mortar::JsonObject results;
     results.set("h1_m", finest.trace1.max_element_length())
         .set("h2_m", finest.trace2.max_element_length())
-        .set("time_s", finest.time_s)
-        .set("limit_s", finest.limit_s)
-        .set("limit_ratio", finest.time_s / finest.limit_s)
         .set("err_mortar_l2", finest.mortar_errors.l2)
         .set("err_pointwise_l2", finest.pointwise_errors.l2)
         .set("mortar_integral_rel_error", sweep.worst_mortar)
@@ -234,8 +234,10 @@ int main(int argc, char** argv) {
         .set("pointwise_total_force_rel_error", facts.pointwise_force.total_rel_error)
         .set("mortar_hat_reach_nodes", facts.mortar_reach.nodes_reached)
         .set("plain_hats_integral_rel_error", facts.plain_hats_integral_rel_error);
+    mortar::add_timing(results, finest.timing);
     table.write_csv(o.out + "/convergence.csv");
     mortar::write_summary(o.out + "/summary.json", parser, rates, results);
+    if (o.profile) mortar::report_profile(finest.timing, o.out);
     // Interpolation theory: smooth in H^2 (L2 2, H1 1); kinks in H^{3/2-eps} (3/2, 1/2);
     // a square-root edge in H^{1-eps} (L2 1, and w' not square integrable: no H1 error).
     const bool smooth = o.trace == "smooth", edge = o.trace == "edge";

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/interface/interface_trace.hpp"
+#include "common/linalg/physical_limit.hpp"
 #include "trace_functions.hpp"
 
 namespace chapter01 {
@@ -26,6 +27,7 @@ struct TransferResult {
   TransferErrors pointwise_errors, mortar_errors;
   double time_s = 0;   // merged grid + D, M + the projection solve (best of 5)
   double limit_s = 0;  // the 1D floor: assemble side 1's mass matrix, Cholesky, solve (best of 5)
+  mortar::TimedLevel timing{};  // both, with their spread and phases
 };
 
 // Side 2 has n2 = round(n1 / r) elements for a mesh ratio r = h2 / h1 (at least one).

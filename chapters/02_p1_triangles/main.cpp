@@ -18,6 +18,7 @@
 #include "common/study/convergence_study.hpp"
 #include "common/linalg/memory_estimate.hpp"
 #include "common/study/options.hpp"
+#include "common/study/timing_report.hpp"
 #include "common/study/vtu.hpp"
 #include "figures.hpp"
 #include "level.hpp"
@@ -34,6 +35,7 @@ struct Options {
   std::string out = "results/ch02_p1_triangles";
   bool quick = false;
   bool no_plot = false;
+  bool profile = false;  // print where the finest level's time goes
 };
 
 // 8.4M dofs: a ceiling on time; memory_shortfall (common/memory_estimate) refuses earlier on a
@@ -51,6 +53,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 4, levels = 4; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
   parser.parse(argc, argv);
   parser.apply_quick(o.quick, {{"n0", o.n0, 4}, {"levels", o.levels, 4}});
   // in floating point: n0 2^(levels-1) cannot wrap before it is compared
@@ -107,14 +110,13 @@ int main(int argc, char** argv) {
     mortar::JsonObject results;
     results.set("h_m", finest.mesh.max_edge_length())
         .set("dofs", finest.dofs)
-        .set("time_s", finest.time_s)
-        .set("limit_s", finest.limit_s)
-        .set("limit_ratio", finest.time_s / finest.limit_s)
         .set("err_energy", finest.norms.relative_energy())
         .set("err_l2", finest.norms.relative_l2())
         .set("spd_solver", o.spd_solver);
+    mortar::add_timing(results, finest.timing);
     table.write_csv(o.out + "/convergence.csv");
     mortar::write_summary(o.out + "/summary.json", parser, rates, results);
+    if (o.profile) mortar::report_profile(finest.timing, o.out);
     mortar::write_vtu(o.out + "/solution.vtu", finest.mesh, finest.u,
                       mortar::element_stresses(finest.mesh, material, finest.u));
     std::printf("rates (three finest levels): energy %.3f (theory 1), L2 %.3f (theory 2)\n",

@@ -15,6 +15,7 @@
 
 #include "common/study/contact_plots.hpp"
 #include "figures.hpp"
+#include "common/study/timing_report.hpp"
 #include "common/study/two_body_pictures.hpp"
 #include "hertz_report.hpp"
 #include "study.hpp"
@@ -51,9 +52,6 @@ int main(int argc, char** argv) {
     results.set("h1_m", f.h1)
         .set("h2_m", f.h2)
         .set("dofs", f.bodies.num_dofs())
-        .set("time_s", f.time_s)
-        .set("limit_s", f.limit_s)
-        .set("limit_ratio", f.time_s / f.limit_s)
         .set("total_force", f.total_force)
         .set("contact_half_width", f.zone.half_width())
         .set("max_pressure", table.column("max_pressure").back())
@@ -64,6 +62,7 @@ int main(int argc, char** argv) {
         .set("max_penetration_x_m", f.max_penetration_x)
         .set("elements_in_contact", f.zone.active_elements)
         .set("reference", ref.kind);
+    mortar::add_timing(results, f.timing);
     if (ref.kind == "hertz") chapter05::add_hertz_results(results, o, table, f, *ref.hertz);
     if (ref.kind == "exact")
       for (const std::string key : {"err_energy", "err_l2", "err_pressure", "err_pressure_hminus", "err_pressure_best",
@@ -78,6 +77,7 @@ int main(int argc, char** argv) {
     table.local_rates().write_csv(o.out + "/local_rates.csv", true);
     chapter05::write_contact_csv(o.out + "/contact.csv", f);
     mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
+    if (o.profile) mortar::report_profile(f.timing, o.out);
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "
                 "residual %.2e\n", f.bodies.num_dofs(), f.zone.active_nodes, f.total_force,
                 f.solution.iterations, f.solution.residual);

@@ -86,6 +86,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
   parser.parse(argc, argv);
   o.compare = !o.no_compare;
   // the signorini scene measures local rates, which need more levels, each one cheaper

@@ -30,6 +30,7 @@ struct Options : mortar::TwoBodyOptions {
   bool no_compare = false, compare = true;
   std::string out = "results/ch05_unilateral_uzawa";
   bool quick = false, no_plot = false;
+  bool profile = false;  // print where the finest level's time goes
 };
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv);

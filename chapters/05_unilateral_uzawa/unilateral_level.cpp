@@ -40,15 +40,13 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
   // Steps 1-7, timed: everything but the mesh.
   const auto solve = [&] {
     // 1. The scene: loads, Dirichlet data and the initial gap g(x) >= 0 (scenes.cpp).
-    const mortar::ProfilePhase setup_phase("scene, constraints, elimination");
-    scene = make_scene(setup.scene, r.bodies, exact);
+    {
+      const mortar::ProfilePhase phase("scene (loads, gap)");
+      scene = make_scene(setup.scene, r.bodies, exact);
+    }
     r.gap = scene->gap;
     // 2. K of both bodies, block diagonal: the bodies only meet through B.
-    mortar::SparseMatrix K;
-    {
-      const mortar::ProfilePhase phase("assembly");
-      K = r.bodies.stiffness();
-    }
+    const mortar::SparseMatrix K = r.bodies.stiffness();
     // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
     //    D and M (chapter 4's level.cpp takes these steps one by one).
     r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);

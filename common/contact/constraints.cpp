@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "common/study/profile.hpp"
 #include "common/fem/quadrature.hpp"
 
 namespace mortar {
@@ -15,6 +16,7 @@ Matching parse_matching(const std::string& name) {
 std::string matching_name(Matching m) { return m == Matching::pointwise ? "pointwise" : "integral"; }
 
 ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar) {
+  const ProfilePhase phase("interface and constraints");
   if (nonmortar != 0 && nonmortar != 1)
     throw std::invalid_argument("contact_traces: the non-mortar body is 0 or 1, got " +
                                 std::to_string(nonmortar));
@@ -38,6 +40,7 @@ ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double m
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 MatchingRows pointwise_matching_rows(const ContactInterface& g) {
+  const ProfilePhase phase("interface and constraints");
   const int n = g.nonmortar_trace.num_nodes();
   std::vector<Eigen::Triplet<double>> nm, m;
   MatchingRows c;
@@ -61,6 +64,7 @@ MatchingRows pointwise_matching_rows(const ContactInterface& g) {
 }
 
 MatchingRows integral_matching_rows(const ContactInterface& g) {
+  const ProfilePhase phase("interface and constraints");
   MatchingRows c{Matching::integral, g.matrices.D, g.matrices.M, {}};
   for (int i = 0; i < g.space.dim(); ++i) c.row_node.push_back(g.space.node_of(i));
   return c;
@@ -77,6 +81,7 @@ Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g
 
 Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
                             const std::vector<bool>& prescribed) {
+  const ProfilePhase phase("interface and constraints");
   if (static_cast<int>(prescribed.size()) != bodies.num_dofs())
     throw std::invalid_argument("constraint_rows: the prescribed mask has the wrong size");
   const int nm = g.nonmortar, m = g.mortar();
@@ -112,6 +117,7 @@ Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, 
 
 Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
                            const std::function<double(double)>& g) {
+  const ProfilePhase phase("interface and constraints");
   const InterfaceTrace& t = gamma.nonmortar_trace;
   Eigen::VectorXd G(static_cast<Eigen::Index>(c.row_source.size()));
   if (c.matching == Matching::pointwise) {

@@ -4,12 +4,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/study/profile.hpp"
 #include "common/fem/quadrature.hpp"
 
 namespace mortar {
 
 InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
                                 const Eigen::VectorXd& lambda) {
+  const ProfilePhase phase("post-processing");
   const InterfaceTrace& t = g.nonmortar_trace;
   InterfaceCurve p{t.x, std::vector<double>(t.x.size(), 0.0)};
   if (c.matching == Matching::integral) {
@@ -31,6 +33,7 @@ InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
 
 InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& g,
                            const Eigen::VectorXd& u) {
+  const ProfilePhase phase("post-processing");
   // nodal normal displacement u_y of each trace, then both evaluated at the breakpoints
   auto uy = [&](int l, const InterfaceTrace& t) {
     std::vector<double> v;
@@ -51,6 +54,7 @@ InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& g,
 
 double total_contact_force(const ContactInterface& g, const Constraints& c,
                            const Eigen::VectorXd& lambda) {
+  const ProfilePhase phase("post-processing");
   if (c.matching == Matching::pointwise) return lambda.sum();
   // int psi_i = sum_j C_ij int phi_j
   const InterfaceTrace& t = g.nonmortar_trace;

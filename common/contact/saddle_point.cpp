@@ -1,13 +1,17 @@
 #include "common/contact/saddle_point.hpp"
 
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #ifdef MORTAR_HAVE_UMFPACK
 #include <Eigen/UmfPackSupport>
+
+#include "common/study/profile.hpp"
 #endif
 
 namespace mortar {
@@ -42,6 +46,84 @@ double infinity_norm(const SparseMatrix& A) {
                            "direction the constraints do not hold, such as sliding along Gamma_c?");
 }
 
+// T^T K T without a product of two mesh-size sparse matrices. In the (r, s) split, T = [I; X_r],
+//     T^T K T = K_rr + E,   E = K_rs X_r + X_r^T K_sr + X_r^T K_ss X_r:
+// E lives next to the contact line (K_rs has entries only in the rows next to the pivots, X_r
+// only in the touched columns, where it is the dense X), and K_rr + E is written in one pass
+// over K, column by column.
+SparseMatrix reduced_stiffness(const SparseMatrix& K, const std::vector<int>& pivots,
+                               const std::vector<int>& r_index, const Eigen::MatrixXd& X,
+                               const std::vector<int>& touched, const SparseMatrix& X_r) {
+  const Eigen::Index m = X_r.rows(), nr = X_r.cols();
+  // K_rs and K_ss from the pivot columns of K (K is stored whole, so column = row).
+  std::vector<Eigen::Triplet<double>> rs, ss;
+  std::vector<int> pivot_of(static_cast<std::size_t>(K.rows()), -1);
+  for (int k = 0; k < m; ++k) pivot_of[pivots[k]] = k;
+  for (int k = 0; k < m; ++k)
+    for (SparseMatrix::InnerIterator it(K, pivots[k]); it; ++it) {
+      const int i = static_cast<int>(it.row());
+      if (r_index[i] >= 0) rs.emplace_back(r_index[i], k, it.value());
+      else ss.emplace_back(pivot_of[i], k, it.value());
+    }
+  SparseMatrix K_rs(nr, m), K_ss(m, m);
+  K_rs.setFromTriplets(rs.begin(), rs.end());
+  K_ss.setFromTriplets(ss.begin(), ss.end());
+
+  const SparseMatrix C = K_rs * X_r;
+  const Eigen::MatrixXd D = X.transpose() * (K_ss * X);  // X_r^T K_ss X_r on the touched columns
+  std::vector<Eigen::Triplet<double>> e;
+  e.reserve(2 * static_cast<std::size_t>(C.nonZeros()) + static_cast<std::size_t>(D.size()));
+  for (int j = 0; j < C.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(C, j); it; ++it) {
+      e.emplace_back(it.row(), j, it.value());
+      e.emplace_back(j, it.row(), it.value());
+    }
+  for (std::size_t b = 0; b < touched.size(); ++b)
+    for (std::size_t a = 0; a < touched.size(); ++a)
+      e.emplace_back(touched[a], touched[b], D(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)));
+  SparseMatrix E(nr, nr);
+  E.setFromTriplets(e.begin(), e.end());
+
+  // K_rr + E, merging the sorted rows of both in each column (the r numbering keeps the
+  // order of the dofs, so the rows of K_rr come sorted).
+  SparseMatrix R(nr, nr);
+  R.reserve(K.nonZeros() + E.nonZeros());
+  for (int j = 0; j < K.outerSize(); ++j) {
+    const int jr = r_index[j];
+    if (jr < 0) continue;
+    R.startVec(jr);
+    SparseMatrix::InnerIterator a(K, j), b(E, jr);
+    while (a && r_index[a.row()] < 0) ++a;
+    while (a || b) {
+      const Eigen::Index ra = a ? r_index[a.row()] : nr, rb = b ? b.row() : nr;
+      const Eigen::Index row = std::min(ra, rb);
+      double value = 0;
+      if (ra == row) {
+        value += a.value();
+        do ++a; while (a && r_index[a.row()] < 0);
+      }
+      if (rb == row) {
+        value += b.value();
+        ++b;
+      }
+      R.insertBack(row, jr) = value;
+    }
+  }
+  R.finalize();
+  return R;
+}
+
+// T^T v = v_r + X_r^T v_s.
+Eigen::VectorXd apply_T_transpose(const Eigen::VectorXd& v, const std::vector<int>& pivot_of,
+                                  const std::vector<int>& r_index, const SparseMatrix& X_r) {
+  Eigen::VectorXd v_r(X_r.cols()), v_s(X_r.rows());
+  for (Eigen::Index d = 0; d < v.size(); ++d) {
+    if (r_index[d] >= 0) v_r[r_index[d]] = v[d];
+    else v_s[pivot_of[d]] = v[d];
+  }
+  return v_r + X_r.transpose() * v_s;
+}
+
 #ifdef MORTAR_HAVE_UMFPACK
 class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
  public:
@@ -61,6 +143,7 @@ std::string saddle_solver_name(SaddleSolver s) { return s == SaddleSolver::lu ? 
 
 SaddlePointProblem reduce_to_free_dofs(const ReducedSystem& system, const Constraints& c,
                                        const Eigen::VectorXd& G) {
+  const ProfilePhase phase("Dirichlet elimination");
   SaddlePointProblem p;
   p.K = system.K;
   p.f = system.rhs;
@@ -83,6 +166,7 @@ SaddlePointSolution solve_saddle_point(const SaddlePointProblem& p, SaddleSolver
 }
 
 SaddlePointSolution solve_saddle_point_lu(const SaddlePointProblem& p) {
+  const ProfilePhase phase("saddle-point LU");
   const Eigen::Index n = p.K.rows(), m = p.B.rows();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(p.K.nonZeros() + 2 * p.B.nonZeros());
@@ -129,6 +213,7 @@ SaddlePointSolution solve_saddle_point_lu(const SaddlePointProblem& p) {
 SaddlePointSolution solve_by_elimination(const SaddlePointProblem& p, SpdBackend backend) {
   const int n = static_cast<int>(p.K.rows()), m = static_cast<int>(p.B.rows());
   // Split the unknowns: s = the pivots (one per row), r = the rest, numbered 0 .. n-m-1.
+  std::optional<ProfilePhase> phase(std::in_place, "constraint elimination (T)");
   std::vector<int> pivot_of(n, -1), r_index(n, -1);
   for (int k = 0; k < m; ++k) {
     const int d = p.pivots.at(k);
@@ -166,31 +251,34 @@ SaddlePointSolution solve_by_elimination(const SaddlePointProblem& p, SpdBackend
   const Eigen::MatrixXd X = -Bs_lu.solve(Br_touched);
   const Eigen::VectorXd g_s = Bs_lu.solve(p.G);
 
-  // u = T u_r + g: T is the identity on r and X on s.
-  std::vector<Eigen::Triplet<double>> t_entries;
-  t_entries.reserve(nr + X.size());
+  // u = T u_r + g: T is the identity on r and X on s, here X_r = X in the r numbering
+  // (m x n_r, nonzero only in the touched columns).
+  std::vector<Eigen::Triplet<double>> x_entries;
+  x_entries.reserve(X.size());
+  for (std::size_t c = 0; c < touched.size(); ++c)
+    for (int k = 0; k < m; ++k)
+      if (X(k, static_cast<Eigen::Index>(c)) != 0.0) x_entries.emplace_back(k, touched[c], X(k, static_cast<Eigen::Index>(c)));
+  SparseMatrix X_r(m, nr);
+  X_r.setFromTriplets(x_entries.begin(), x_entries.end());
   Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
-  for (int d = 0; d < n; ++d) {
-    if (r_index[d] >= 0) {
-      t_entries.emplace_back(d, r_index[d], 1.0);
-    } else {
-      const int k = pivot_of[d];
-      g[d] = g_s[k];
-      for (std::size_t c = 0; c < touched.size(); ++c)
-        if (X(k, c) != 0.0) t_entries.emplace_back(d, touched[c], X(k, c));
-    }
-  }
-  SparseMatrix T(n, nr);
-  T.setFromTriplets(t_entries.begin(), t_entries.end());
+  for (int k = 0; k < m; ++k) g[p.pivots[k]] = g_s[k];
 
-  const SparseMatrix KT = p.K * T;
-  const SparseMatrix K_reduced = SparseMatrix(T.transpose()) * KT;
+  phase.emplace("T^T K T product");
+  const SparseMatrix K_reduced = reduced_stiffness(p.K, p.pivots, r_index, X, touched, X_r);
+  const Eigen::VectorXd f_reduced = apply_T_transpose(Eigen::VectorXd(p.f - p.K * g), pivot_of, r_index, X_r);
+  phase.reset();
+  // The ordering is chosen once: AMD. CHOLMOD's automatic choice would also try METIS and
+  // nested dissection on T^T K T (its AMD fill looks costly), spending several times the
+  // limit's whole analysis, and then keep AMD anyway.
   SpdSolver solver(backend);
-  solver.factorize(K_reduced);
-  const Eigen::VectorXd u_r = solver.solve(T.transpose() * (p.f - p.K * g));
+  solver.factorize(K_reduced, SpdOrdering::amd);
+  const Eigen::VectorXd u_r = solver.solve(f_reduced);
+  phase.emplace("multipliers");
 
   SaddlePointSolution sol;
-  sol.u = T * u_r + g;
+  sol.u = g;  // u = T u_r + g
+  const Eigen::VectorXd u_s = X_r * u_r;
+  for (int d = 0; d < n; ++d) sol.u[d] += r_index[d] >= 0 ? u_r[r_index[d]] : u_s[pivot_of[d]];
   // K u + B^T lambda = f on the pivot rows: B_s^T lambda = (f - K u)_s.
   const Eigen::VectorXd residual = p.f - p.K * sol.u;
   Eigen::VectorXd residual_s(m);

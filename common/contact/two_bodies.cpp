@@ -2,11 +2,14 @@
 
 #include <algorithm>
 
+#include "common/study/profile.hpp"
+
 namespace mortar {
 
 TwoBodies::TwoBodies(Body body1, Body body2) : bodies_{std::move(body1), std::move(body2)} {}
 
 SparseMatrix TwoBodies::stiffness() const {
+  const ProfilePhase phase("assembly");
   std::vector<Eigen::Triplet<double>> triplets;
   for (int l = 0; l < 2; ++l) add_stiffness_triplets(bodies_[l].mesh, bodies_[l].material, offset(l), triplets);
   SparseMatrix K(num_dofs(), num_dofs());

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/study/profile.hpp"
+
 namespace mortar {
 
 void prescribe_on_sides(DirichletData& data, const Mesh& mesh, const std::vector<Side>& sides,
@@ -25,6 +27,7 @@ Eigen::VectorXd ReducedSystem::expand(const Eigen::VectorXd& u_free) const {
 
 ReducedSystem eliminate_dirichlet(const SparseMatrix& K, const Eigen::VectorXd& F,
                                   const DirichletData& data) {
+  const ProfilePhase phase("Dirichlet elimination");
   const int n = static_cast<int>(K.rows());
   if (K.cols() != n || F.size() != n)
     throw std::invalid_argument("eliminate_dirichlet: K is " + std::to_string(K.rows()) + " x " +

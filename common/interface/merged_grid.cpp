@@ -6,9 +6,12 @@
 #include <string>
 #include <utility>
 
+#include "common/study/profile.hpp"
+
 namespace mortar {
 
 MergedGrid merge_traces(const InterfaceTrace& t1, const InterfaceTrace& t2, double rel_tol) {
+  const ProfilePhase phase("interface and constraints");
   const double L = t1.length();
   if (std::fabs(t1.x.front() - t2.x.front()) > rel_tol * L ||
       std::fabs(t1.x.back() - t2.x.back()) > rel_tol * L)

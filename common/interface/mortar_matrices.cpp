@@ -2,12 +2,14 @@
 
 #include <vector>
 
+#include "common/study/profile.hpp"
 #include "common/fem/quadrature.hpp"
 
 namespace mortar {
 
 MortarMatrices mortar_matrices(const InterfaceTrace& t1, const InterfaceTrace& t2,
                                const MergedGrid& grid, const MultiplierSpace& space) {
+  const ProfilePhase phase("interface and constraints");
   // First the P1 products on the merged grid: mass11_jl = int phi^1_j phi^1_l and
   // mixed12_jk = int phi^1_j phi^2_k; then D = C mass11 and M = C mixed12 (psi = C phi^1).
   const SegmentRule gauss = gauss_legendre(2);

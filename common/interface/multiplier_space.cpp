@@ -2,9 +2,12 @@
 
 #include <vector>
 
+#include "common/study/profile.hpp"
+
 namespace mortar {
 
 MultiplierSpace end_modified_p1(const InterfaceTrace& trace1) {
+  const ProfilePhase phase("interface and constraints");
   const int N = trace1.num_elements();
   MultiplierSpace space;
   std::vector<Eigen::Triplet<double>> entries;

@@ -7,6 +7,7 @@
 
 #include "common/linalg/memory_estimate.hpp"
 #include "common/study/stopwatch.hpp"
+#include "common/study/timing_report.hpp"
 #include "common/study/two_body_pictures.hpp"
 
 namespace mortar {
@@ -61,6 +62,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
   parser.parse(argc, argv);
   parser.apply_quick(o.quick, {{"n0", o.n0, 6}, {"levels", o.levels, 3}});
   check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
@@ -171,7 +173,10 @@ BilateralLevel solve_manufactured_level(const ManufacturedContact& exact, const 
   SceneData scene;
   r.timing = time_against_limit(
       [&] {
-        scene = manufactured_scene(r.bodies, exact);
+        {
+          const ProfilePhase phase("scene (loads)");
+          scene = manufactured_scene(r.bodies, exact);
+        }
         r.solution = solve(r.bodies, scene, options);
       },
       [&] { return two_body_limit_matrix(r.bodies, scene); });
@@ -263,9 +268,6 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
       .set("h2_m", f.h2)
       .set("dofs", f.bodies.num_dofs())
       .set("multipliers", static_cast<int>(f.solution.lambda.size()))
-      .set("time_s", f.time_s)
-      .set("limit_s", f.limit_s)
-      .set("limit_ratio", f.time_s / f.limit_s)
       .set("err_energy", f.err_energy)
       .set("err_l2", f.err_l2)
       .set("err_pressure", f.pressure_errors.l2 / f.pressure_errors.norm_l2)
@@ -277,8 +279,10 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
            (integral ? study.patch_pointwise : study.patch_integral).rel_error)
       .set("matching", matching_name(study.matching))
       .set("saddle_solver", o.saddle_solver);
+  add_timing(results, f.timing);
   study.table.write_csv(o.out + "/convergence.csv");
   write_summary(o.out + "/summary.json", parser, study.rates(), results);
+  if (o.profile) report_profile(f.timing, o.out);
 }
 
 void write_bilateral_pictures(const BilateralStudyOptions& o, const BilateralStudy& study) {

@@ -37,6 +37,7 @@ struct BilateralStudyOptions : TwoBodyOptions {
   std::string out;
   bool quick = false;
   bool no_plot = false;
+  bool profile = false;  // print where the finest level's time goes
 };
 
 // Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
