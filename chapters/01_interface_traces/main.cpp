@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "common/study/convergence_study.hpp"
+#include "common/linalg/spd_solver.hpp"
 #include "common/study/options.hpp"
 #include "common/study/timing_report.hpp"
 #include "common/interface/trace_transfer.hpp"
@@ -33,6 +34,7 @@ namespace {
 struct Options {
   int n0 = 12;
   int levels = 7;
+  int threads = mortar::default_solver_threads;
   double h_ratio = 1.5;
   std::string trace = "smooth";
   double L = 1.0;
@@ -60,7 +62,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("quick", o.quick, "small sizes for tests (sets levels = 4)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
+  parser.add_int("threads", o.threads, mortar::solver_threads_help, mortar::Range::closed(1, 64));
   parser.parse(argc, argv);
+  mortar::set_solver_threads(o.threads);
   if (o.quick) o.levels = 4;
   if (static_cast<long long>(o.n0) << (o.levels - 1) > max_side1_elements)
     parser.fail("levels", "the finest level would have more than " +

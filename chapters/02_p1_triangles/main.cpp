@@ -28,6 +28,7 @@ namespace {
 struct Options {
   int n0 = 8;
   int levels = 6;
+  int threads = mortar::default_solver_threads;
   double E = 1.0;
   double nu = 0.3;
   double jitter = 0.0;
@@ -54,7 +55,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 4, levels = 4; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
+  parser.add_int("threads", o.threads, mortar::solver_threads_help, mortar::Range::closed(1, 64));
   parser.parse(argc, argv);
+  mortar::set_solver_threads(o.threads);
   parser.apply_quick(o.quick, {{"n0", o.n0, 4}, {"levels", o.levels, 4}});
   // in floating point: n0 2^(levels-1) cannot wrap before it is compared
   const double n = std::ldexp(static_cast<double>(o.n0), o.levels - 1);

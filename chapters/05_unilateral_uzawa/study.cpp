@@ -87,7 +87,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
+  parser.add_int("threads", o.threads, mortar::solver_threads_help, mortar::Range::closed(1, 64));
   parser.parse(argc, argv);
+  mortar::set_solver_threads(o.threads);
   o.compare = !o.no_compare;
   // the signorini scene measures local rates, which need more levels, each one cheaper
   if (o.scene == "signorini") {

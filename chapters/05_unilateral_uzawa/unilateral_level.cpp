@@ -46,7 +46,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
     }
     r.gap = scene->gap;
     // 2. K of both bodies, block diagonal: the bodies only meet through B.
-    const mortar::SparseMatrix K = r.bodies.stiffness();
+    mortar::SparseMatrix K = r.bodies.stiffness();
     // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
     //    D and M (chapter 4's level.cpp takes these steps one by one).
     r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
@@ -60,11 +60,16 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
 
     // 6. Dirichlet elimination: the prescribed dofs leave the system; their values move into f
     //    and into the gap, G - B u_d.
-    const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene->data.F, scene->data.dirichlet);
-    const mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
+    mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene->data.F, scene->data.dirichlet);
+    mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
+    // From here on one stiffness matrix is enough (the one the solver factorizes), as in the
+    // physical limit: the factor is the memory peak, and three more copies of K would add to it.
+    K = mortar::SparseMatrix();
+    system.K = mortar::SparseMatrix();
     // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
     //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
-    r.solution = mortar::solve_contact({reduced.K, reduced.f, reduced.B, reduced.G}, setup.solver);
+    r.solution = mortar::solve_contact(
+        {std::move(reduced.K), std::move(reduced.f), std::move(reduced.B), std::move(reduced.G)}, setup.solver);
     r.u = system.expand(r.solution.u);
   };
   if (setup.measure_limit) {

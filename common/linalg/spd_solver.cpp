@@ -1,5 +1,7 @@
 #include "common/linalg/spd_solver.hpp"
 
+#include <dlfcn.h>
+
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
@@ -29,6 +31,26 @@ SpdBackend fastest_spd_backend() {
 
 std::string backend_name(SpdBackend backend) {
   return backend == SpdBackend::cholmod ? "cholmod" : "simplicial_ldlt";
+}
+
+// OpenBLAS and libgomp come in as CHOLMOD's dependencies (or not at all, without CHOLMOD), so
+// their controls are looked up in the running process rather than linked.
+bool set_solver_threads(int threads) {
+  bool set = false;
+  if (auto* blas = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) {
+    blas(threads);
+    set = true;
+  }
+  if (auto* omp = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_num_threads"))) {
+    omp(threads);
+    set = true;
+  }
+  return set;
+}
+
+int solver_threads() {
+  auto* get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  return get != nullptr ? get() : 0;
 }
 
 namespace {
@@ -226,24 +248,7 @@ void SpdSolver::factorize_with_last(const SparseMatrix& K, const std::vector<int
   if (backend_ == SpdBackend::cholmod) {
     const ProfilePhase phase("analysis");
     // The rest in AMD's order, computed on K restricted to the rest, then `last`.
-    const Eigen::Index n = K.rows();
-    std::vector<int> rest_index(n, 0);
-    for (int d : last) rest_index.at(d) = -1;
-    std::vector<int> rest;
-    for (Eigen::Index d = 0; d < n; ++d)
-      if (rest_index[d] == 0) {
-        rest_index[d] = static_cast<int>(rest.size());
-        rest.push_back(static_cast<int>(d));
-      }
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int k = 0; k < K.outerSize(); ++k)
-      for (SparseMatrix::InnerIterator it(K, k); it; ++it)
-        if (it.row() >= it.col() && rest_index[it.row()] >= 0 && rest_index[it.col()] >= 0)
-          entries.emplace_back(rest_index[it.row()], rest_index[it.col()], it.value());
-    SparseMatrix K_rest(static_cast<Eigen::Index>(rest.size()), static_cast<Eigen::Index>(rest.size()));
-    K_rest.setFromTriplets(entries.begin(), entries.end());
-    std::vector<int> order;
-    for (int k : impl_->cholmod.amd_order(K_rest)) order.push_back(rest[k]);
+    std::vector<int> order = amd_order_of_rest(K, last);
     order.insert(order.end(), last.begin(), last.end());
     impl_->last = last;
     factorize(K, SpdOrdering::amd, order);
@@ -251,6 +256,31 @@ void SpdSolver::factorize_with_last(const SparseMatrix& K, const std::vector<int
   }
 #endif
   factorize(K, SpdOrdering::amd, {});
+}
+
+std::vector<int> SpdSolver::amd_order_of_rest(const SparseMatrix& K, const std::vector<int>& last) {
+  std::vector<int> rest_index(static_cast<std::size_t>(K.rows()), 0), rest;
+  for (int d : last) rest_index.at(static_cast<std::size_t>(d)) = -1;
+  for (int d = 0; d < K.rows(); ++d)
+    if (rest_index[d] == 0) {
+      rest_index[d] = static_cast<int>(rest.size());
+      rest.push_back(d);
+    }
+  // The lower triangle of K on the rest, column by column (the numbering keeps the order).
+  SparseMatrix K_rest(static_cast<Eigen::Index>(rest.size()), static_cast<Eigen::Index>(rest.size()));
+  K_rest.reserve(K.nonZeros() / 2 + K.rows());
+  for (int j = 0; j < K.outerSize(); ++j) {
+    if (rest_index[j] < 0) continue;
+    K_rest.startVec(rest_index[j]);
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (it.row() >= j && rest_index[it.row()] >= 0) K_rest.insertBack(rest_index[it.row()], rest_index[j]) = it.value();
+  }
+  K_rest.finalize();
+  std::vector<int> order;
+#ifdef MORTAR_HAVE_CHOLMOD
+  for (int k : impl_->cholmod.amd_order(K_rest)) order.push_back(rest[k]);
+#endif
+  return order;
 }
 
 SpdSolver::TrailingFactor SpdSolver::trailing_factor() const {

@@ -24,6 +24,18 @@ bool cholmod_available();
 SpdBackend fastest_spd_backend();  // CHOLMOD when built in, else SimplicialLDLT
 std::string backend_name(SpdBackend backend);
 
+// Threads of the dense kernels under CHOLMOD (OpenBLAS's and OpenMP's), for the whole process.
+// Returns false when neither library is loaded (then nothing changed).
+bool set_solver_threads(int threads);
+// What OpenBLAS reports (0 when it is not loaded).
+int solver_threads();
+// The --threads option of every program, and its default: one thread. On this course's 2-core
+// machine a second BLAS thread mostly spins or yields in CHOLMOD's small supernodes, adding
+// system time (measured both ways: README.md, "Speed").
+constexpr int default_solver_threads = 1;
+constexpr const char* solver_threads_help =
+    "threads of the dense kernels under CHOLMOD (OpenBLAS, OpenMP); the limit runs with the same";
+
 class SpdSolver {
  public:
   explicit SpdSolver(SpdBackend backend = fastest_spd_backend());
@@ -58,6 +70,8 @@ class SpdSolver {
 
  private:
   void factorize(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given);
+  // AMD's order of the unknowns not in `last`, from K restricted to them.
+  std::vector<int> amd_order_of_rest(const SparseMatrix& K, const std::vector<int>& last);
   struct Impl;
   SpdBackend backend_;
   std::unique_ptr<Impl> impl_;

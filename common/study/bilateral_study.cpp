@@ -63,7 +63,9 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 6, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
+  parser.add_int("threads", o.threads, mortar::solver_threads_help, mortar::Range::closed(1, 64));
   parser.parse(argc, argv);
+  mortar::set_solver_threads(o.threads);
   parser.apply_quick(o.quick, {{"n0", o.n0, 6}, {"levels", o.levels, 3}});
   check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
   const FinestSize size = finest_size(o);
