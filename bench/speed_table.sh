@@ -9,6 +9,8 @@
 #   bash bench/speed_table.sh            # every row, up to the largest sizes (about 15 min)
 #   bash bench/speed_table.sh --quick    # the default sizes only (about 2 min)
 #   bash bench/speed_table.sh --threads 2   # the same with two BLAS/OpenMP threads
+#   bash bench/speed_table.sh --keep DIR    # keep each run's output (summary.json, the phases
+#                                           # in profile.csv, the printed log) in DIR/<row>/
 #
 # This is a benchmark, not a test: it asserts nothing and CI does not run it. It expects the
 # programs in build/ (bash course.sh run, or cmake --build build).
@@ -17,11 +19,13 @@ cd "$(dirname "$0")/.."
 
 quick=0
 threads=1
+keep=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --quick) quick=1 ;;
     --threads) threads="${2:?--threads needs a number}"; shift ;;
-    *) echo "speed_table.sh: unknown option '$1' (--quick, --threads N)" >&2; exit 2 ;;
+    --keep) keep="${2:?--keep needs a folder}"; shift ;;
+    *) echo "speed_table.sh: unknown option '$1' (--quick, --threads N, --keep DIR)" >&2; exit 2 ;;
   esac
   shift
 done
@@ -62,15 +66,20 @@ echo "threads: $threads; $(nproc) cores; $(date -u +%Y-%m-%d)"
 echo
 echo "| run | dofs | time s | limit s | ratio | spread (time, limit) | peak memory / limit's |"
 echo "|---|---|---|---|---|---|---|"
+row=0
 for run in "${runs[@]}"; do
   read -r -a args <<<"$run"
+  row=$((row + 1))
   dir="$out/run"
+  [[ -n "$keep" ]] && dir="$keep/$row"
   rm -rf "$dir"
-  extra=(--no-plot --threads "$threads" --out "$dir")
-  if ! "build/${args[0]}" "${args[@]:1}" "${extra[@]}" >"$out/log" 2>&1; then
-    echo "| \`$run\` | failed: $(tail -1 "$out/log") | | | | | |"
+  mkdir -p "$dir"
+  extra=(--no-plot --profile --threads "$threads" --out "$dir")
+  if ! "build/${args[0]}" "${args[@]:1}" "${extra[@]}" >"$dir/log.txt" 2>&1; then
+    echo "| \`$run\` | failed: $(tail -1 "$dir/log.txt") | | | | | |"
     continue
   fi
+  echo "$run" >"$dir/command.txt"
   printf '| `%s` | %s | %.3g | %.3g | %.2f | %.0f%%, %.0f%% | %.2f |\n' "$run" \
     "$(result "$dir" dofs)" "$(result "$dir" time_s)" "$(result "$dir" limit_s)" \
     "$(result "$dir" limit_ratio)" "$(awk "BEGIN{print 100*$(result "$dir" time_spread)}")" \
