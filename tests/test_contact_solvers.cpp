@@ -86,6 +86,31 @@ TEST(ContactSolvers, pdas_and_uzawa_satisfy_complementarity_and_agree) {
   }
 }
 
+// With CHOLMOD, S = B K^{-1} B^T is formed whole from the trailing block of a factor with
+// the contact unknowns ordered last; with SimplicialLDLT its columns come from solves with K.
+// Both are the same operator, so both solvers must reach the same u and lambda, to rounding
+// and the solvers' tolerance: an entry of S wrong or misplaced in the Schur complement path
+// changes the answer.
+TEST(ContactSolvers, schur_complement_and_column_solves_give_the_same_answer) {
+  if (!cholmod_available()) GTEST_SKIP() << "the Schur complement path needs CHOLMOD";
+  for (Matching m : {Matching::integral, Matching::pointwise}) {
+    const Built b = pressed(24, 1.5, 0.02, m);
+    for (ContactSolverKind kind : {ContactSolverKind::pdas, ContactSolverKind::uzawa}) {
+      ContactSolverOptions schur = with(kind), columns = with(kind);
+      schur.backend = SpdBackend::cholmod;
+      columns.backend = SpdBackend::simplicial_ldlt;
+      const ContactSolution a = solve_contact(b.problem, schur), c = solve_contact(b.problem, columns);
+      const std::string what = contact_solver_name(kind) + ", " + matching_name(m);
+      expect_kkt(b.problem, a, what);
+      ASSERT_GT(c.lambda.norm(), 0.0) << what;
+      EXPECT_LT((a.u - c.u).norm(), 1e-9 * c.u.norm()) << what;
+      EXPECT_LT((a.lambda - c.lambda).norm(), 1e-9 * c.lambda.norm()) << what;
+      EXPECT_NEAR(a.S_norm, c.S_norm, 1e-9 * c.S_norm) << what;
+      EXPECT_EQ(a.columns, static_cast<int>(b.problem.B.rows())) << what << ": S formed whole";
+    }
+  }
+}
+
 TEST(ContactSolvers, plain_uzawa_needs_more_iterations_as_h_shrinks_and_pdas_does_not) {
   const Built coarse = pressed(12, 1.5, 0.02, Matching::integral), fine = pressed(48, 1.5, 0.02, Matching::integral);
   const int u1 = solve_contact(coarse.problem, with(ContactSolverKind::uzawa, false)).iterations;
