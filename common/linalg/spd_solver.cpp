@@ -278,7 +278,8 @@ std::vector<int> SpdSolver::amd_order_of_rest(const SparseMatrix& K, const std::
   K_rest.finalize();
   std::vector<int> order;
 #ifdef MORTAR_HAVE_CHOLMOD
-  for (int k : impl_->cholmod.amd_order(K_rest)) order.push_back(rest[k]);
+  if (!rest.empty())  // `last` may be every unknown: nothing to order then
+    for (int k : impl_->cholmod.amd_order(K_rest)) order.push_back(rest[k]);
 #endif
   return order;
 }
