@@ -117,7 +117,7 @@ TransferResult run_transfer_case(const TransferCase& c, const TraceFunction& w) 
           space = mortar::end_modified_p1(r.trace1);
         }
         {
-          const mortar::ProfilePhase phase("mortar matrices D, M");
+          const mortar::ProfilePhase phase("mortar matrices D and M");
           mm = mortar::mortar_matrices(r.trace1, r.trace2, grid, space);
         }
         const mortar::ProfilePhase phase("projection D^-1 M w");

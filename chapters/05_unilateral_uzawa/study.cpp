@@ -72,6 +72,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
   parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
   parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with Nesterov's momentum, or plain projected gradient");
+  parser.add_choice("uzawa-step", o.uzawa_step, {"both-ends", "one-over-norm"},
+                    "plain Uzawa with --rho 0: rho = 2 / (lambda_max + lambda_min(S_AA)) once the active set "
+                    "settles, or 1 / ||S|| throughout");
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = automatic: 1 / ||B K^-1 B^T|| (power iteration), "
                     "for plain Uzawa then 2 / (lambda_max + lambda_min) of the active block", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
@@ -140,6 +143,7 @@ mortar::ContactSolverOptions solver_options(const Options& o, const std::string&
   s.accelerate = accelerate;
   s.tol = o.tol;
   s.rho = o.rho;
+  s.step_from_both_ends = o.uzawa_step == "both-ends";
   return s;
 }
 

@@ -24,6 +24,7 @@ struct Options : mortar::TwoBodyOptions {
   std::string matching = "integral";
   std::string solver = "pdas";
   std::string acceleration = "nesterov";
+  std::string uzawa_step = "both-ends";
   double rho = 0, tol = 1e-8;
   int n0 = 12, levels = 5;  // signorini: 8 and 6 unless given (parse_options)
   int threads = mortar::default_solver_threads;

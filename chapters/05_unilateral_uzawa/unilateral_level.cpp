@@ -41,7 +41,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
   const auto solve = [&] {
     // 1. The scene: loads, Dirichlet data and the initial gap g(x) >= 0 (scenes.cpp).
     {
-      const mortar::ProfilePhase phase("scene (loads, gap)");
+      const mortar::ProfilePhase phase("scene (loads and gap)");
       scene = make_scene(setup.scene, r.bodies, exact);
     }
     r.gap = scene->gap;
@@ -62,14 +62,17 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
     //    and into the gap, G - B u_d.
     mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene->data.F, scene->data.dirichlet);
     mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, r.constraints, G);
-    // From here on one stiffness matrix is enough (the one the solver factorizes), as in the
-    // physical limit: the factor is the memory peak, and three more copies of K would add to it.
-    K = mortar::SparseMatrix();
-    system.K = mortar::SparseMatrix();
+    // From here on one stiffness matrix is enough, the one the solver factorizes, as in the
+    // physical limit: the factor is the memory peak, and every other copy of K would add to it.
+    // (Eigen 3.4's SparseMatrix has no move: swap hands its storage over, or frees it.)
+    mortar::SparseMatrix().swap(K);
+    mortar::SparseMatrix().swap(system.K);
     // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
     //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
-    r.solution = mortar::solve_contact(
-        {std::move(reduced.K), std::move(reduced.f), std::move(reduced.B), std::move(reduced.G)}, setup.solver);
+    mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
+    problem.K.swap(reduced.K);
+    problem.B.swap(reduced.B);
+    r.solution = mortar::solve_contact(problem, setup.solver);
     r.u = system.expand(r.solution.u);
   };
   if (setup.measure_limit) {

@@ -267,9 +267,9 @@ SaddlePointSolution solve_by_elimination(const SaddlePointProblem& p, SpdBackend
   const SparseMatrix K_reduced = reduced_stiffness(p.K, p.pivots, r_index, X, touched, X_r);
   const Eigen::VectorXd f_reduced = apply_T_transpose(Eigen::VectorXd(p.f - p.K * g), pivot_of, r_index, X_r);
   phase.reset();
-  // The ordering is chosen once: AMD. CHOLMOD's automatic choice would also try METIS and
-  // nested dissection on T^T K T (its AMD fill looks costly), spending several times the
-  // limit's whole analysis, and then keep AMD anyway.
+  // The ordering is chosen once: AMD (spd_solver.hpp), as for the limit. CHOLMOD's automatic
+  // choice would also try METIS and nested dissection on T^T K T, several times the limit's
+  // whole analysis, and then keep AMD anyway.
   SpdSolver solver(backend);
   solver.factorize(K_reduced, SpdOrdering::amd);
   const Eigen::VectorXd u_r = solver.solve(f_reduced);

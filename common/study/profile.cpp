@@ -23,6 +23,14 @@ std::vector<std::string> phase_names(const std::vector<ProfileColumn>& columns) 
   return names;
 }
 
+// A CSV field: quoted when it holds a comma or a quote.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
 double seconds_of(const ProfileColumn& c, const std::string& name) {
   double inside = 0;
   for (const auto& [phase, s] : c.phases) {
@@ -104,11 +112,11 @@ void write_profile_csv(const std::string& path, const std::vector<ProfileColumn>
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
   out << "phase";
-  for (const ProfileColumn& c : columns) out << ',' << c.title << "_s";
+  for (const ProfileColumn& c : columns) out << ',' << csv_field(c.title + "_s");
   out << '\n';
   out.precision(10);
   for (const std::string& name : phase_names(columns)) {
-    out << name;
+    out << csv_field(name);
     for (const ProfileColumn& c : columns) out << ',' << seconds_of(c, name);
     out << '\n';
   }
