@@ -29,6 +29,13 @@ TEST(SaddlePoint, lu_and_elimination_give_the_same_solution) {
       EXPECT_LT((a.lambda - c.lambda).norm(), 1e-8 * a.lambda.norm()) << matching_name(m);
       // the constraints hold: B u = 0
       EXPECT_LT((c.constraints.B * c.u).cwiseAbs().maxCoeff(), 1e-14);
+      // the multipliers first, through S = B K^{-1} B^T, on either backend
+      for (SpdBackend backend : {SpdBackend::simplicial_ldlt, fastest_spd_backend()}) {
+        const BilateralSolution d = solve_bilateral(b, scene, {m, nonmortar, SaddleSolver::schur, backend});
+        EXPECT_LT((a.u - d.u).norm(), 1e-10 * a.u.norm()) << "schur, " << matching_name(m) << ", " << backend_name(backend);
+        EXPECT_LT((a.lambda - d.lambda).norm(), 1e-8 * a.lambda.norm()) << "schur, " << matching_name(m);
+        EXPECT_LT((d.constraints.B * d.u).cwiseAbs().maxCoeff(), 1e-12 * d.u.cwiseAbs().maxCoeff());
+      }
     }
 }
 
@@ -40,6 +47,9 @@ TEST(SaddlePoint, elimination_holds_a_body_that_only_the_constraints_hold) {
       solve_bilateral(b, scene, {Matching::integral, 0, SaddleSolver::elimination, fastest_spd_backend()});
   EXPECT_TRUE(s.u.allFinite());
   EXPECT_THROW(two_body_limit(b, scene), std::runtime_error);  // K alone: reported singular
+  // so the multipliers-first route, which factorizes K alone, refuses it instead of guessing
+  EXPECT_THROW(solve_bilateral(b, scene, {Matching::integral, 0, SaddleSolver::schur, fastest_spd_backend()}),
+               std::runtime_error);
 }
 
 TEST(SaddlePoint, a_body_free_to_slide_is_reported_by_both_solvers) {
@@ -53,7 +63,7 @@ TEST(SaddlePoint, a_body_free_to_slide_is_reported_by_both_solvers) {
       kept.values.push_back(scene.dirichlet.values[k]);
     }
   scene.dirichlet = kept;
-  for (SaddleSolver solver : {SaddleSolver::lu, SaddleSolver::elimination})
+  for (SaddleSolver solver : {SaddleSolver::lu, SaddleSolver::elimination, SaddleSolver::schur})
     EXPECT_THROW(solve_bilateral(b, scene, {Matching::integral, 0, solver, fastest_spd_backend()}),
                  std::runtime_error)
         << saddle_solver_name(solver);

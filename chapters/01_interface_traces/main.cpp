@@ -34,7 +34,7 @@ namespace {
 struct Options {
   int n0 = 12;
   int levels = 7;
-  int threads = mortar::default_solver_threads;
+  int threads = mortar::default_solver_threads();
   double h_ratio = 1.5;
   std::string trace = "smooth";
   double L = 1.0;

@@ -28,7 +28,7 @@ namespace {
 struct Options {
   int n0 = 8;
   int levels = 6;
-  int threads = mortar::default_solver_threads;
+  int threads = mortar::default_solver_threads();
   double E = 1.0;
   double nu = 0.3;
   double jitter = 0.0;

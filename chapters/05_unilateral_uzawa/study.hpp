@@ -27,7 +27,7 @@ struct Options : mortar::TwoBodyOptions {
   std::string uzawa_step = "both-ends";
   double rho = 0, tol = 1e-8;
   int n0 = 12, levels = 5;  // signorini: 8 and 6 unless given (parse_options)
-  int threads = mortar::default_solver_threads;
+  int threads = mortar::default_solver_threads();
   double R = 1, delta = 0.02;
   bool no_compare = false, compare = true;
   std::string out = "results/ch05_unilateral_uzawa";

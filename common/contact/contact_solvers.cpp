@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/linalg/dual_schur.hpp"
 #include "common/study/profile.hpp"
 #include <stdexcept>
 
@@ -48,8 +49,9 @@ class DualOperator {
   DualOperator(const ContactProblem& p, SpdBackend backend) : B_(p.B), solver_(backend) {
     Bt_ = B_.transpose();
     if (backend == SpdBackend::cholmod) {
-      solver_.factorize_with_last(p.K, contact_unknowns());
-      form_schur_complement();
+      factorize_for_dual_schur(solver_, p.K, B_);
+      S_ = dual_schur_complement(solver_, B_);
+      whole_ = true;
     } else {
       solver_.factorize(p.K);
     }
@@ -61,7 +63,7 @@ class DualOperator {
 
   // S x for x with few nonzeros: only their columns are needed.
   Eigen::VectorXd apply(const Eigen::VectorXd& x) {
-    if (whole_) return S_.selfadjointView<Eigen::Lower>() * x;
+    if (whole_) return S_ * x;
     std::vector<int> missing;
     for (int i = 0; i < size(); ++i)
       if (x[i] != 0.0 && cache_.find(i) == cache_.end()) missing.push_back(i);
@@ -77,7 +79,7 @@ class DualOperator {
     Eigen::MatrixXd S_AA(a, a);
     if (whole_) {
       for (int c = 0; c < a; ++c)
-        for (int r = c; r < a; ++r) S_AA(r, c) = S_AA(c, r) = S_(std::max(rows[r], rows[c]), std::min(rows[r], rows[c]));
+        for (int r = 0; r < a; ++r) S_AA(r, c) = S_(rows[r], rows[c]);
       return S_AA;
     }
     std::vector<int> missing;
@@ -108,27 +110,6 @@ class DualOperator {
   }
 
  private:
-  // The unknowns B touches, in increasing order.
-  std::vector<int> contact_unknowns() const {
-    std::vector<int> c;
-    for (int j = 0; j < B_.outerSize(); ++j)
-      if (B_.col(j).nonZeros() > 0) c.push_back(j);
-    return c;
-  }
-  void form_schur_complement() {
-    const ProfilePhase phase("dual operator S");
-    const SpdSolver::TrailingFactor t = solver_.trailing_factor();
-    const int m = size(), nc = static_cast<int>(t.dofs.size());
-    std::vector<int> index(B_.cols(), -1);
-    for (int k = 0; k < nc; ++k) index[t.dofs[k]] = k;
-    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(nc, m);  // B_c^T, then L_c^{-1} B_c^T
-    for (int j = 0; j < B_.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(B_, j); it; ++it) W(index[j], it.row()) = it.value();
-    t.L.triangularView<Eigen::Lower>().solveInPlace(W);
-    S_ = Eigen::MatrixXd::Zero(m, m);
-    S_.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());  // lower triangle of W^T W
-    whole_ = true;
-  }
   void compute(const std::vector<int>& rows) {
     const ProfilePhase phase("dual operator S");
     constexpr int block = 64;  // right-hand sides per pass through the factor
@@ -145,7 +126,7 @@ class DualOperator {
   SpdSolver solver_;
   Eigen::VectorXd b_;
   bool whole_ = false;
-  Eigen::MatrixXd S_;  // whole_: S, its lower triangle
+  Eigen::MatrixXd S_;  // whole_: S
   std::map<int, Eigen::VectorXd> cache_;
 };
 

@@ -11,6 +11,7 @@
 #ifdef MORTAR_HAVE_UMFPACK
 #include <Eigen/UmfPackSupport>
 
+#include "common/linalg/dual_schur.hpp"
 #include "common/study/profile.hpp"
 #endif
 
@@ -136,10 +137,13 @@ class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
 SaddleSolver parse_saddle_solver(const std::string& name) {
   if (name == "lu") return SaddleSolver::lu;
   if (name == "elimination") return SaddleSolver::elimination;
-  throw std::invalid_argument("unknown saddle-point solver '" + name + "' (lu or elimination)");
+  if (name == "schur") return SaddleSolver::schur;
+  throw std::invalid_argument("unknown saddle-point solver '" + name + "' (lu, elimination or schur)");
 }
 
-std::string saddle_solver_name(SaddleSolver s) { return s == SaddleSolver::lu ? "lu" : "elimination"; }
+std::string saddle_solver_name(SaddleSolver s) {
+  return s == SaddleSolver::lu ? "lu" : s == SaddleSolver::elimination ? "elimination" : "schur";
+}
 
 SaddlePointProblem reduce_to_free_dofs(const ReducedSystem& system, const Constraints& c,
                                        const Eigen::VectorXd& G) {
@@ -162,7 +166,8 @@ SaddlePointProblem reduce_to_free_dofs(const ReducedSystem& system, const Constr
 
 SaddlePointSolution solve_saddle_point(const SaddlePointProblem& p, SaddleSolver solver,
                                        SpdBackend backend) {
-  return solver == SaddleSolver::lu ? solve_saddle_point_lu(p) : solve_by_elimination(p, backend);
+  if (solver == SaddleSolver::lu) return solve_saddle_point_lu(p);
+  return solver == SaddleSolver::elimination ? solve_by_elimination(p, backend) : solve_by_dual_schur(p, backend);
 }
 
 SaddlePointSolution solve_saddle_point_lu(const SaddlePointProblem& p) {
@@ -285,6 +290,22 @@ SaddlePointSolution solve_by_elimination(const SaddlePointProblem& p, SpdBackend
   for (int k = 0; k < m; ++k) residual_s[k] = residual[p.pivots[k]];
   Eigen::SparseLU<SparseMatrix> BsT_lu(SparseMatrix(Bs.transpose()));
   sol.lambda = BsT_lu.solve(residual_s);
+  return sol;
+}
+
+SaddlePointSolution solve_by_dual_schur(const SaddlePointProblem& p, SpdBackend backend) {
+  SpdSolver solver(backend);
+  factorize_for_dual_schur(solver, p.K, p.B);
+  const Eigen::MatrixXd S = dual_schur_complement(solver, p.B);
+  const Eigen::VectorXd b = p.B * solver.solve(p.f) - p.G;
+  const ProfilePhase phase("multipliers");
+  // S is SPD when the rows of B are independent (the inf-sup condition, discretely).
+  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  if (llt.info() != Eigen::Success)
+    throw std::runtime_error("schur: S = B K^{-1} B^T is not positive definite: dependent constraint rows?");
+  SaddlePointSolution sol;
+  sol.lambda = llt.solve(b);
+  sol.u = solver.solve(Eigen::VectorXd(p.f - p.B.transpose() * sol.lambda));
   return sol;
 }
 

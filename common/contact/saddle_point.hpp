@@ -11,6 +11,11 @@
 //    dof at the row's node), u_s = B_s^{-1} (G - B_r u_r). Substituting u = T u_r + g leaves
 //    T^T K T u_r = T^T (f - K g), symmetric positive definite, for one sparse Cholesky; then
 //    lambda = B_s^{-T} (f - K u)_s. This is the space V_h written with a basis.
+//  - schur: the multipliers first. K u = f - B^T lambda gives B u = B K^{-1} f - S lambda, so
+//    S lambda = B K^{-1} f - G with S = B K^{-1} B^T, read off the factor of K with the contact
+//    unknowns last (linalg/dual_schur.hpp); then u = K^{-1} (f - B^T lambda). Chapter 5's
+//    solvers work this way. K itself must be SPD: a body held only through the constraints (the
+//    patch test) is refused.
 #pragma once
 
 #include <string>
@@ -35,7 +40,7 @@ struct SaddlePointSolution {
   Eigen::VectorXd lambda;
 };
 
-enum class SaddleSolver { lu, elimination };
+enum class SaddleSolver { lu, elimination, schur };
 SaddleSolver parse_saddle_solver(const std::string& name);
 std::string saddle_solver_name(SaddleSolver s);
 
@@ -48,5 +53,6 @@ SaddlePointSolution solve_saddle_point(const SaddlePointProblem& p, SaddleSolver
                                        SpdBackend backend = fastest_spd_backend());
 SaddlePointSolution solve_saddle_point_lu(const SaddlePointProblem& p);
 SaddlePointSolution solve_by_elimination(const SaddlePointProblem& p, SpdBackend backend);
+SaddlePointSolution solve_by_dual_schur(const SaddlePointProblem& p, SpdBackend backend);
 
 }  // namespace mortar

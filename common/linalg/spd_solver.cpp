@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "common/study/profile.hpp"
@@ -46,6 +47,10 @@ bool set_solver_threads(int threads) {
     set = true;
   }
   return set;
+}
+
+int default_solver_threads() {
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
 }
 
 int solver_threads() {

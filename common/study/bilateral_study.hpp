@@ -31,9 +31,9 @@ void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
 struct BilateralStudyOptions : TwoBodyOptions {
   int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
   int levels = 6;
-  int threads = mortar::default_solver_threads;
+  int threads = mortar::default_solver_threads();
   double aspect = 1;  // cell width / cell height
-  std::string saddle_solver = "elimination";
+  std::string saddle_solver = "schur";
   std::string pressure_ends = "sloped";  // the manufactured sigma_N: sloped (p'(L) != 0) or flat
   std::string out;
   bool quick = false;
