@@ -6,9 +6,9 @@
 # limit interleaved, at least twice each, and keeps the minimum of each
 # (common/linalg/physical_limit.hpp).
 #
-#   bash bench/speed_table.sh            # every row, up to the largest sizes (about 15 min)
-#   bash bench/speed_table.sh --quick    # the default sizes only (about 2 min)
-#   bash bench/speed_table.sh --threads 2   # the same with two BLAS/OpenMP threads
+#   bash bench/speed_table.sh            # every row, up to the largest sizes (about 12 min)
+#   bash bench/speed_table.sh --quick    # the default sizes only (about 1 min)
+#   bash bench/speed_table.sh --threads 1   # the same with one BLAS/OpenMP thread
 #   bash bench/speed_table.sh --keep DIR    # keep each run's output (summary.json, the phases
 #                                           # in profile.csv, the printed log) in DIR/<row>/
 #
@@ -18,7 +18,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 quick=0
-threads=1
+threads=""  # the programs' default: every core
 keep=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -29,7 +29,7 @@ while [[ $# -gt 0 ]]; do
   esac
   shift
 done
-[[ "$threads" =~ ^[1-9][0-9]*$ ]] || { echo "speed_table.sh: --threads must be a positive integer" >&2; exit 2; }
+[[ -z "$threads" || "$threads" =~ ^[1-9][0-9]*$ ]] || { echo "speed_table.sh: --threads must be a positive integer" >&2; exit 2; }
 for p in ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching ch05_unilateral_uzawa; do
   [[ -x "build/$p" ]] || { echo "speed_table.sh: build/$p is missing: build first (bash course.sh run)" >&2; exit 2; }
 done
@@ -49,6 +49,8 @@ if [[ $quick == 0 ]]; then
     "ch03_pointwise_matching --levels 7"
     "ch04_integral_matching --levels 7"
     "ch04_integral_matching --h-ratio 0.3333333 --levels 6"
+    "ch04_integral_matching --saddle-solver elimination --levels 7"
+    "ch04_integral_matching --saddle-solver elimination --h-ratio 0.3333333 --levels 6"
     "ch04_integral_matching --saddle-solver lu --levels 7"
     "ch05_unilateral_uzawa --no-compare --levels 7"
     "ch05_unilateral_uzawa --no-compare --levels 7 --solver uzawa"
@@ -62,7 +64,7 @@ result() { sed -n "/\"results\"/,\$ s/^ *\"$2\": *\([^,]*\),\{0,1\}$/\1/p" "$1/s
 
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-echo "threads: $threads; $(nproc) cores; $(date -u +%Y-%m-%d)"
+echo "threads: ${threads:-$(nproc) (the default, every core)}; $(nproc) cores; $(date -u +%Y-%m-%d)"
 echo
 echo "| run | dofs | time s | limit s | ratio | spread (time, limit) | peak memory / limit's |"
 echo "|---|---|---|---|---|---|---|"
@@ -74,7 +76,8 @@ for run in "${runs[@]}"; do
   [[ -n "$keep" ]] && dir="$keep/$row"
   rm -rf "$dir"
   mkdir -p "$dir"
-  extra=(--no-plot --profile --threads "$threads" --out "$dir")
+  extra=(--no-plot --profile --out "$dir")
+  [[ -n "$threads" ]] && extra+=(--threads "$threads")
   if ! "build/${args[0]}" "${args[@]:1}" "${extra[@]}" >"$dir/log.txt" 2>&1; then
     echo "| \`$run\` | failed: $(tail -1 "$dir/log.txt") | | | | | |"
     continue

@@ -30,10 +30,11 @@ struct TimedLevel {
 };
 
 // How often: at least `min` times each, then more while the level and its limit together
-// have taken less than `budget_s` (small levels, where one timing is noisy), at most `max`.
+// have taken less than `budget_s` (small levels, where one timing is noisy: with two threads
+// the spread of two runs reached 20-50% below a second), at most `max`.
 struct Repetitions {
   int min = 2, max = 5;
-  double budget_s = 1.0;
+  double budget_s = 3.0;
 };
 
 // Runs `level` (the program's whole solve of one level; it keeps its own result) and the
