@@ -8,11 +8,11 @@
 #include <stdexcept>
 #include <string>
 
-#ifdef MORTAR_HAVE_UMFPACK
-#include <Eigen/UmfPackSupport>
-
 #include "common/linalg/dual_schur.hpp"
 #include "common/study/profile.hpp"
+
+#ifdef MORTAR_HAVE_UMFPACK
+#include <Eigen/UmfPackSupport>
 #endif
 
 namespace mortar {
