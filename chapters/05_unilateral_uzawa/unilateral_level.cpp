@@ -76,7 +76,8 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
     r.u = system.expand(r.solution.u);
   };
   if (setup.measure_limit) {
-    r.timing = mortar::time_against_limit(solve, [&] { return mortar::two_body_limit_matrix(r.bodies, scene->data); });
+    r.timing = mortar::time_against_limit(
+        solve, [&] { return mortar::two_body_limit_matrix(r.bodies, scene->data); }, setup.repetitions);
     r.time_s = r.timing.time_s;
     r.limit_s = r.timing.limit_s;
   } else {

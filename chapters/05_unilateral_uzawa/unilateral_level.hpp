@@ -18,6 +18,7 @@ struct UnilateralSetup {
   mortar::ContactSolverOptions solver;
   SceneParameters scene;
   bool measure_limit = true;  // time the physical limit (one more assembly and Cholesky of K)
+  mortar::Repetitions repetitions;  // of the level and its limit, interleaved
 };
 
 struct UnilateralLevel {

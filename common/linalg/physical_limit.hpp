@@ -34,7 +34,7 @@ struct TimedLevel {
 // the spread of two runs reached 20-50% below a second), at most `max`.
 struct Repetitions {
   int min = 2, max = 5;
-  double budget_s = 3.0;
+  double budget_s = 1.0;
 };
 
 // Runs `level` (the program's whole solve of one level; it keeps its own result) and the
