@@ -7,10 +7,10 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/linalg/dual_schur.hpp"
 #include "common/study/profile.hpp"
-#include <stdexcept>
 
 namespace mortar {
 

@@ -53,11 +53,6 @@ int default_solver_threads() {
   return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
 }
 
-int solver_threads() {
-  auto* get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-  return get != nullptr ? get() : 0;
-}
-
 namespace {
 // A pivot that keeps less than this fraction of its matrix's diagonal entry has lost every
 // digit to cancellation: the matrix is singular to working precision (a floating body, say).
@@ -109,7 +104,6 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
       default: return "other";
     }
   }
-  double factor_nonzeros() { return cholmod().lnz; }
 
   // AMD's ordering of the symmetric matrix whose lower triangle is A.
   std::vector<int> amd_order(const SparseMatrix& A) {
@@ -303,15 +297,6 @@ std::string SpdSolver::ordering_used() const {
   if (backend_ == SpdBackend::cholmod && impl_->factorized) return impl_->cholmod.ordering_used();
 #endif
   return backend_ == SpdBackend::cholmod ? "none" : "amd (Eigen)";
-}
-
-double SpdSolver::factor_nonzeros() const {
-#ifdef MORTAR_HAVE_CHOLMOD
-  if (backend_ == SpdBackend::cholmod && impl_->factorized) return impl_->cholmod.factor_nonzeros();
-#endif
-  return impl_->factorized && backend_ == SpdBackend::simplicial_ldlt
-             ? static_cast<double>(impl_->ldlt.matrixL().nestedExpression().nonZeros())
-             : 0.0;
 }
 
 void SpdSolver::factorize(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given) {

@@ -29,8 +29,6 @@ std::string backend_name(SpdBackend backend);
 // Threads of the dense kernels under CHOLMOD (OpenBLAS's and OpenMP's), for the whole process.
 // Returns false when neither library is loaded (then nothing changed).
 bool set_solver_threads(int threads);
-// What OpenBLAS reports (0 when it is not loaded).
-int solver_threads();
 // The --threads option of every program, and its default: every core. Measured both ways on
 // the 2-core build machine (README.md, "Speed"): the second thread makes CHOLMOD's
 // factorization about a third faster from 100k dofs up, so it is kept although it lifts the
@@ -62,10 +60,8 @@ class SpdSolver {
     Eigen::MatrixXd L;
   };
   TrailingFactor trailing_factor() const;
-  // The ordering the analysis kept ("amd", "metis", "nesdis", "given", ...) and the nonzeros of
-  // the factor, for --profile.
+  // The ordering the analysis kept ("amd", "metis", "nesdis", "given", ...).
   std::string ordering_used() const;
-  double factor_nonzeros() const;
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
   // Several right-hand sides at once (the columns of rhs): one pass through the factor.
   Eigen::MatrixXd solve_many(const Eigen::MatrixXd& rhs) const;
