@@ -124,18 +124,7 @@ Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
     for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g(t.x[c.row_source[r]]);
     return G;
   }
-  // int g phi_j on the non-mortar trace, then int g psi_i = sum_j C_ij int g phi_j
-  const SegmentRule rule = gauss_legendre(3);
-  Eigen::VectorXd g_phi = Eigen::VectorXd::Zero(t.num_nodes());
-  for (int e = 0; e < t.num_elements(); ++e) {
-    const double h = t.x[e + 1] - t.x[e];
-    for (std::size_t q = 0; q < rule.points.size(); ++q) {
-      const double s = rule.points[q], w = rule.weights[q] * h * g(t.x[e] + s * h);
-      g_phi[e] += (1 - s) * w;
-      g_phi[e + 1] += s * w;
-    }
-  }
-  const Eigen::VectorXd g_psi = gamma.space.C * g_phi;
+  const Eigen::VectorXd g_psi = integrals_against_basis(gamma.space, t, g);
   for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g_psi[c.row_source[r]];
   return G;
 }

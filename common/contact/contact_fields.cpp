@@ -56,14 +56,8 @@ double total_contact_force(const ContactInterface& g, const Constraints& c,
                            const Eigen::VectorXd& lambda) {
   const ProfilePhase phase("post-processing");
   if (c.matching == Matching::pointwise) return lambda.sum();
-  // int psi_i = sum_j C_ij int phi_j
-  const InterfaceTrace& t = g.nonmortar_trace;
-  Eigen::VectorXd phi_integral = Eigen::VectorXd::Zero(t.num_nodes());
-  for (int e = 0; e < t.num_elements(); ++e) {
-    phi_integral[e] += 0.5 * (t.x[e + 1] - t.x[e]);
-    phi_integral[e + 1] += 0.5 * (t.x[e + 1] - t.x[e]);
-  }
-  const Eigen::VectorXd psi_integral = g.space.C * phi_integral;
+  const Eigen::VectorXd psi_integral =
+      integrals_against_basis(g.space, g.nonmortar_trace, [](double) { return 1.0; });
   double total = 0;
   for (std::size_t r = 0; r < c.row_source.size(); ++r) total += lambda[r] * psi_integral[c.row_source[r]];
   return total;

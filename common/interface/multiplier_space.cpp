@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "common/fem/quadrature.hpp"
 #include "common/study/profile.hpp"
 
 namespace mortar {
@@ -24,6 +25,37 @@ MultiplierSpace end_modified_p1(const InterfaceTrace& trace1) {
   }
   space.C.setFromTriplets(entries.begin(), entries.end());
   return space;
+}
+
+RowMajorMatrix MultiplierSpace::element_coefficients() const {
+  if (!continuous()) return E;
+  const Eigen::Index elements = C.cols() - 1;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < C.rows(); ++i)
+    for (RowMajorMatrix::InnerIterator it(C, i); it; ++it) {
+      const Eigen::Index j = it.col();  // phi_j lives on elements j - 1 (as its right hat) and j (left)
+      if (j > 0) entries.emplace_back(i, 2 * (j - 1) + 1, it.value());
+      if (j < elements) entries.emplace_back(i, 2 * j, it.value());
+    }
+  RowMajorMatrix out(C.rows(), 2 * elements);
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
+Eigen::VectorXd integrals_against_basis(const MultiplierSpace& space, const InterfaceTrace& t,
+                                        const std::function<double(double)>& f) {
+  // int f phi on the local hats of every element, then psi_i = sum E(i, .) local hats
+  const SegmentRule rule = gauss_legendre(3);
+  Eigen::VectorXd local = Eigen::VectorXd::Zero(2 * t.num_elements());
+  for (int e = 0; e < t.num_elements(); ++e) {
+    const double h = t.x[e + 1] - t.x[e];
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q], w = rule.weights[q] * h * f(t.x[e] + s * h);
+      local[2 * e] += (1 - s) * w;
+      local[2 * e + 1] += s * w;
+    }
+  }
+  return space.element_coefficients() * local;
 }
 
 }  // namespace mortar
