@@ -18,11 +18,17 @@ MortarMatrices mortar_matrices(const InterfaceTrace& t1, const InterfaceTrace& t
   std::vector<Eigen::Triplet<double>> mass, mixed;
   for (const MergedSegment& seg : grid.segments) {
     const int e1 = seg.element1, e2 = seg.element2;
+    // The segment's ends in each element's local coordinate, before any Gauss point: the
+    // differences of nearby coordinates are exact (Sterbenz), whereas a Gauss point x ~ L
+    // carries an error of eps L, which would cost eps L / h relative to h (the dual basis's
+    // off-diagonal D_ij, 2 int phi_a phi_b - int phi_b^2 = 0, cancels to that size).
+    const double h1 = t1.x[e1 + 1] - t1.x[e1], h2 = t2.x[e2 + 1] - t2.x[e2];
+    const double a1 = (seg.a - t1.x[e1]) / h1, b1 = (seg.b - t1.x[e1]) / h1;
+    const double a2 = (seg.a - t2.x[e2]) / h2, b2 = (seg.b - t2.x[e2]) / h2;
     for (std::size_t q = 0; q < gauss.points.size(); ++q) {
-      const double x = seg.a + gauss.points[q] * (seg.b - seg.a);
       const double w = gauss.weights[q] * (seg.b - seg.a);
-      const double s1 = (x - t1.x[e1]) / (t1.x[e1 + 1] - t1.x[e1]);
-      const double s2 = (x - t2.x[e2]) / (t2.x[e2 + 1] - t2.x[e2]);
+      const double s1 = a1 + gauss.points[q] * (b1 - a1);
+      const double s2 = a2 + gauss.points[q] * (b2 - a2);
       const double phi1[2] = {1 - s1, s1}, phi2[2] = {1 - s2, s2};
       for (int j = 0; j < 2; ++j) {
         for (int l = 0; l < 2; ++l) mass.emplace_back(2 * e1 + j, e1 + l, w * phi1[j] * phi1[l]);

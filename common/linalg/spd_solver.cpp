@@ -94,6 +94,15 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
     if (m_cholmodFactor->x == nullptr && m_cholmodFactor->minor == m_cholmodFactor->n)
       fail("factorization", "no numerical values in the factor", K.rows());
   }
+  // The numerical factorization alone, on the analysis of the last compute_checked: K must
+  // have the pattern the analysis saw.
+  void refactorize_checked(const SparseMatrix& K) {
+    const ProfilePhase phase("factorization");
+    factorize(K);
+    check_status("factorization", K.rows());
+    if (m_cholmodFactor->x == nullptr && m_cholmodFactor->minor == m_cholmodFactor->n)
+      fail("factorization", "no numerical values in the factor", K.rows());
+  }
   std::string ordering_used() {
     const cholmod_common& c = cholmod();
     switch (c.method[c.selected].ordering) {
@@ -315,31 +324,63 @@ void SpdSolver::factorize(const SparseMatrix& K, SpdOrdering ordering, std::vect
       const ProfilePhase phase("factorization");
       impl_->ldlt.compute(K);
     }
-    if (impl_->ldlt.info() != Eigen::Success)
-      throw std::runtime_error("SpdSolver (SimplicialLDLT): factorization of the " +
-                               std::to_string(K.rows()) + " x " + std::to_string(K.rows()) +
-                               " matrix failed");
-    // LDLT also runs through indefinite and singular matrices: check every pivot, which
-    // for P K P^T = L D L^T sits at D[P(i)] for unknown i.
-    const Eigen::VectorXd d = impl_->ldlt.vectorD();
-    const auto& P = impl_->ldlt.permutationP().indices();
-    for (Eigen::Index i = 0; i < d.size(); ++i) {
-      const double ratio = d[P[i]] / diagonal[i];
-      if (!(ratio > singular_pivot_ratio)) report_singular("SimplicialLDLT", i, ratio);
-    }
+    check_ldlt(diagonal);
   } else {
 #ifdef MORTAR_HAVE_CHOLMOD
     impl_->cholmod.compute_checked(K, ordering, std::move(given));
-    if (impl_->cholmod.info() != Eigen::Success)
-      throw std::runtime_error("SpdSolver (CHOLMOD): K is not positive definite (" +
-                               std::to_string(K.rows()) +
-                               " unknowns): is a body free to move rigidly?");
-    // A singular K can also come through with a pivot that is pure round-off.
-    const auto [ratio, dof] = impl_->cholmod.worst_pivot(diagonal);
-    if (!(ratio > singular_pivot_ratio)) report_singular("CHOLMOD", dof, ratio);
+    check_cholmod(diagonal);
 #endif
   }
   impl_->factorized = true;
+}
+
+void SpdSolver::refactorize(const SparseMatrix& K) {
+  if (!impl_->factorized || K.rows() != impl_->size)
+    throw std::logic_error("SpdSolver::refactorize needs a factorize of a matrix of the same size first");
+  impl_->factorized = false;
+  const Eigen::VectorXd diagonal = K.diagonal();
+  if (!(diagonal.minCoeff() > 0))
+    throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" +
+                             std::to_string(diagonal.minCoeff()) + "): it is not positive definite");
+  if (backend_ == SpdBackend::simplicial_ldlt) {
+    {
+      const ProfilePhase phase("factorization");
+      impl_->ldlt.factorize(K);
+    }
+    check_ldlt(diagonal);
+  } else {
+#ifdef MORTAR_HAVE_CHOLMOD
+    impl_->cholmod.refactorize_checked(K);
+    check_cholmod(diagonal);
+#endif
+  }
+  impl_->factorized = true;
+}
+
+void SpdSolver::check_ldlt(const Eigen::VectorXd& diagonal) const {
+  if (impl_->ldlt.info() != Eigen::Success)
+    throw std::runtime_error("SpdSolver (SimplicialLDLT): factorization of the " +
+                             std::to_string(impl_->size) + " x " + std::to_string(impl_->size) +
+                             " matrix failed");
+  // LDLT also runs through indefinite and singular matrices: check every pivot, which
+  // for P K P^T = L D L^T sits at D[P(i)] for unknown i.
+  const Eigen::VectorXd d = impl_->ldlt.vectorD();
+  const auto& P = impl_->ldlt.permutationP().indices();
+  for (Eigen::Index i = 0; i < d.size(); ++i) {
+    const double ratio = d[P[i]] / diagonal[i];
+    if (!(ratio > singular_pivot_ratio)) report_singular("SimplicialLDLT", i, ratio);
+  }
+}
+
+void SpdSolver::check_cholmod([[maybe_unused]] const Eigen::VectorXd& diagonal) const {
+#ifdef MORTAR_HAVE_CHOLMOD
+  if (impl_->cholmod.info() != Eigen::Success)
+    throw std::runtime_error("SpdSolver (CHOLMOD): K is not positive definite (" + std::to_string(impl_->size) +
+                             " unknowns): is a body free to move rigidly?");
+  // A singular K can also come through with a pivot that is pure round-off.
+  const auto [ratio, dof] = impl_->cholmod.worst_pivot(diagonal);
+  if (!(ratio > singular_pivot_ratio)) report_singular("CHOLMOD", dof, ratio);
+#endif
 }
 
 Eigen::MatrixXd SpdSolver::solve_many(const Eigen::MatrixXd& rhs) const {

@@ -52,6 +52,10 @@ class SpdSolver {
   // the Schur complement of K on `last`; trailing_factor() returns it.
   void factorize_with_last(const SparseMatrix& K, const std::vector<int>& last);
 
+  // A matrix with the pattern of the last one factorized (explicit zeros included): the
+  // analysis is kept, only the numerical factorization runs (chapter 6's Newton steps).
+  void refactorize(const SparseMatrix& K);
+
   // After factorize_with_last: the dense lower-triangular L_c with
   //     (K^{-1})_{cc} = L_c^{-T} L_c^{-1},   c = dofs (the unknowns `last`, in the factor's order),
   // read off the factor: no solve. |c| x |c| doubles, the size of the contact line, not the mesh.
@@ -70,6 +74,8 @@ class SpdSolver {
  private:
   void factorize(const SparseMatrix& K, SpdOrdering ordering, std::vector<int> given);
   // AMD's order of the unknowns not in `last`, from K restricted to them.
+  void check_ldlt(const Eigen::VectorXd& diagonal) const;
+  void check_cholmod(const Eigen::VectorXd& diagonal) const;
   std::vector<int> amd_order_of_rest(const SparseMatrix& K, const std::vector<int>& last);
   struct Impl;
   SpdBackend backend_;

@@ -259,7 +259,9 @@ BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const Manufac
   for (int level = 0; level < o.levels; ++level) {
     auto solved = std::make_unique<BilateralLevel>(
         solve_manufactured_level(exact, level_geometry(o, level), solver, method.solve));
-    study.table.add(solved->row());
+    Row row = solved->row();
+    if (method.more_columns) method.more_columns(*solved, exact, row);
+    study.table.add(row);
     (level == 0 ? study.coarsest : study.finest) = std::move(solved);
   }
   const bool own_pointwise = method.matching == Matching::pointwise;
@@ -268,7 +270,8 @@ BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const Manufac
   return study;
 }
 
-void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study) {
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study,
+                             const JsonObject& extra) {
   const BilateralLevel& f = *study.finest;
   const bool integral = study.matching == Matching::integral;
   JsonObject results;
@@ -288,6 +291,7 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
       .set("matching", matching_name(study.matching))
       .set("saddle_solver", o.saddle_solver);
   add_timing(results, f.timing);
+  results.merge(extra);
   study.table.write_csv(o.out + "/convergence.csv");
   write_summary(o.out + "/summary.json", parser, study.rates(), results);
   if (o.profile) report_profile(f.timing, o.out);

@@ -11,6 +11,7 @@
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/contact_fields.hpp"
 #include "common/study/convergence_study.hpp"
+#include "common/study/json_writer.hpp"
 #include "common/fem/errors.hpp"
 #include "common/contact/manufactured_contact.hpp"
 #include "common/study/options.hpp"
@@ -82,9 +83,12 @@ using BilateralSolver =
     std::function<BilateralSolution(const TwoBodies&, const SceneData&, const BilateralOptions&)>;
 
 // A chapter's method: its matching (named in the outputs) and its own solve.
+// A chapter may add columns of its own to each level's row (chapter 6: the error of the dual
+// multiplier as a function).
 struct BilateralMethod {
   Matching matching = Matching::integral;
   BilateralSolver solve = solve_bilateral;
+  std::function<void(const BilateralLevel&, const ManufacturedContact&, Row&)> more_columns;
 };
 
 // One level of the study: the meshes, the manufactured loads, the solve (timed with the loads),
@@ -118,7 +122,9 @@ BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const Manufac
 
 // convergence.csv and summary.json; results hold the finest level, the patch test of this
 // chapter's matching (patch_test_rel_error) and of the other one.
-void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study);
+// `extra` adds a chapter's own keys to results.
+void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study,
+                             const JsonObject& extra = {});
 
 // Pictures of the problem (common/study/two_body_pictures.hpp): meshes.png and deformed.png of
 // the coarsest level, then body1.vtu, body2.vtu and contact.vtu of the finest level.

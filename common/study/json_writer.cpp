@@ -42,6 +42,11 @@ JsonObject& JsonObject::put(const std::string& key, Value v) {
   return *this;
 }
 
+JsonObject& JsonObject::merge(const JsonObject& other) {
+  for (const auto& [key, value] : other.entries_) put(key, value);
+  return *this;
+}
+
 JsonObject& JsonObject::set(const std::string& key, double value) { return put(key, value); }
 JsonObject& JsonObject::set(const std::string& key, const std::string& value) { return put(key, value); }
 JsonObject& JsonObject::set(const std::string& key, bool value) { return put(key, value); }

@@ -19,6 +19,9 @@ class JsonObject {
   JsonObject& set(const std::string& key, bool value);
   JsonObject& set(const std::string& key, const JsonObject& value);
 
+  // Every key of other, in its order (replacing keys this object already has).
+  JsonObject& merge(const JsonObject& other);
+
   std::string dump(int indent = 0) const;
   bool empty() const { return entries_.empty(); }
 
