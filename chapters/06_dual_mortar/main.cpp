@@ -18,21 +18,56 @@
 #include <cstdio>
 #include <exception>
 
+#include <cmath>
+#include <memory>
+
 #include "bilateral_level.hpp"
+#include "figures.hpp"
+#include "hertz_study.hpp"
 #include "common/interface/dual_basis.hpp"
 #include "common/study/bilateral_study.hpp"
 #include "common/study/contact_plots.hpp"
+
+namespace {
+// Both bases level by level: dofs, the energy error, the pressure error, time and its ratio.
+void print_comparison(const mortar::ConvergenceTable& dual, const mortar::ConvergenceTable& standard) {
+  const auto dofs = dual.column("dofs"), ed = dual.column("err_energy"), es = standard.column("err_energy");
+  const auto pd = dual.column("err_pressure_function"), pn = dual.column("err_pressure"), ps = standard.column("err_pressure");
+  const auto td = dual.column("time_s"), ts = standard.column("time_s"), ld = dual.column("limit_s"),
+             ls = standard.column("limit_s");
+  std::printf("%9s | %-21s | %-32s | %-23s\n", "", "energy error", "pressure L2 error", "time / limit");
+  std::printf("%9s | %10s %10s | %10s %10s %10s | %11s %11s\n", "dofs", "standard", "dual", "standard", "dual fn",
+              "dual nodes", "standard", "dual");
+  for (std::size_t k = 0; k < dofs.size(); ++k)
+    std::printf("%9.0f | %10.4e %10.4e | %10.4e %10.4e %10.4e | %11.2f %11.2f\n", dofs[k], es[k], ed[k], ps[k], pd[k],
+                pn[k], ts[k] / ls[k], td[k] / ld[k]);
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   // 1. Options, checked before any work starts.
   mortar::BilateralStudyOptions o;
   o.out = "results/ch06_dual_mortar";
-  bool no_compare = false;
+  bool no_compare = false, no_hertz = false;
+  chapter06::HertzOptions hertz;
   mortar::OptionParser parser("ch06_dual_mortar",
                               "Dual (biorthogonal) mortar multipliers: condensation of the bilateral problem, "
                               "and the semismooth Newton method for unilateral contact.");
   parser.add_flag("no-compare", no_compare, "skip the standard mortar basis (chapter 4) on the same levels");
+  parser.add_flag("no-hertz", no_hertz, "skip part 2, unilateral contact on chapter 5's Hertz scene");
+  parser.add_int("hertz-levels", hertz.levels, "levels of the Hertz scene (chapter 5's meshes, 12 elements first)",
+                 mortar::Range::closed(1, 9));
+  std::string hertz_start = "nested";
+  parser.add_choice("hertz-start", hertz_start, {"nested", "empty"},
+                    "the dual Newton method's first active set: from the level below, or none");
   mortar::parse_bilateral_options(parser, o, argc, argv);
+  // Part 2 runs on chapter 5's bodies (square blocks of one material) unless materials are given.
+  hertz.bodies = o;
+  hertz.bodies.H1 = hertz.bodies.H2 = 1;
+  if (!parser.given("E2")) hertz.bodies.E2 = 1;
+  if (!parser.given("nu2")) hertz.bodies.nu2 = 0.3;
+  hertz.nested_start = hertz_start == "nested";
+  if (o.quick && !parser.given("hertz-levels")) hertz.levels = 3;
   try {
     // 2. Chapter 4's exact solution: two materials glued in y, sliding in x.
     const mortar::ManufacturedContact exact = mortar::manufactured_solution(o);
@@ -47,6 +82,29 @@ int main(int argc, char** argv) {
 
     mortar::JsonObject extra;
     extra.set("basis", "dual").set("d_offdiagonal_max", offdiagonal);
+    // 4. Part 2: Hertz with both bases, the same meshes, each level timed against its limit.
+    std::unique_ptr<chapter06::HertzStudy> hertz_study;
+    if (!no_hertz) {
+      hertz_study = std::make_unique<chapter06::HertzStudy>(chapter06::run_hertz_study(hertz));
+      const chapter06::HertzStudy& h = *hertz_study;
+      chapter06::write_hertz_csv(o.out + "/hertz.csv", h);
+      const chapter06::HertzLevel &s = h.standard.back(), &d = h.dual.back();
+      extra.set("hertz_dofs", s.dofs)
+          .set("hertz_total_force_standard", s.total_force)
+          .set("hertz_total_force_dual", d.total_force)
+          .set("hertz_total_force_rel_difference", std::fabs(d.total_force - s.total_force) / std::fabs(s.total_force))
+          .set("hertz_iterations_standard", s.iterations)
+          .set("hertz_iterations_dual", d.iterations)
+          .set("hertz_limit_ratio_standard", s.timing.ratio())
+          .set("hertz_limit_ratio_dual", d.timing.ratio())
+          .set("hertz_min_function_dual", d.min_function)
+          .set("hertz_complementarity_residual_dual", d.residual);
+      std::printf("Hertz, finest level (%d dofs): total force standard %.8g, dual %.8g (relative difference %.2e); "
+                  "iterations %d (active set on S) and %d (Newton, one factorization each); time %.2f and %.2f x "
+                  "the limit\n",
+                  s.dofs, s.total_force, d.total_force, std::fabs(d.total_force - s.total_force) / s.total_force,
+                  s.iterations, d.iterations, s.timing.ratio(), d.timing.ratio());
+    }
     mortar::write_bilateral_outputs(o, parser, dual, extra);
     const auto rates = dual.rates();
     std::printf("dual basis: rates (three finest levels): energy %.3f (Theorem 4.2 with M_h dual: 1), L2 %.3f, "
@@ -56,6 +114,27 @@ int main(int argc, char** argv) {
                 dual.patch_integral.rel_error);
     std::printf("finest level: %d dofs, %.3f s, %.2f x the physical limit (%.3f s)\n", finest.bodies.num_dofs(),
                 finest.time_s, finest.time_s / finest.limit_s, finest.limit_s);
+    // 5. Chapter 4's standard basis on the same levels, for the comparison (standard.csv).
+    std::unique_ptr<mortar::BilateralStudy> standard;
+    if (!no_compare) {
+      std::printf("the standard basis of M_h^1 (chapter 4), same levels:\n");
+      standard = std::make_unique<mortar::BilateralStudy>(
+          mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, mortar::solve_bilateral, {}}));
+      standard->table.write_csv(o.out + "/standard.csv");
+      print_comparison(dual.table, standard->table);
+    }
+
+    // 6. Figures.
+    const bool run = !o.no_plot;
+    chapter06::plot_dual_basis(o.out, run);
+    const mortar::ConvergenceTable* standard_table = standard ? &standard->table : nullptr;
+    chapter06::plot_bases_against_h(o.out, dual.table, standard_table, run);
+    chapter06::plot_bases_against_time(o.out, dual.table, standard_table, run);
+    chapter06::plot_dual_pressure(o.out, *dual.coarsest, exact, run);
+    mortar::plot_pressure(o.out, finest, exact, "dual multipliers: the coefficients lambda_i at their nodes, finest mesh", run);
+    mortar::plot_jump(o.out, finest, "dual multipliers: normal jump [u_h.n], finest mesh", run);
+    mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run);
+    if (hertz_study) chapter06::plot_hertz_pressure(o.out, *hertz_study, run);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch06_dual_mortar: error: %s\n", e.what());

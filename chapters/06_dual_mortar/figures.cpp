@@ -1,0 +1,181 @@
+#include "figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/interface/dual_basis.hpp"
+#include "common/study/plot.hpp"
+
+namespace chapter06 {
+
+namespace {
+const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b"};
+
+// psi_i of a space on a trace, drawn element by element with a break at each node so the
+// jumps of a discontinuous basis show as jumps (NaN breaks the line).
+mortar::Series basis_function(const mortar::MultiplierSpace& space, const mortar::InterfaceTrace& t, int i) {
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(space.dim());
+  unit[i] = 1;
+  const mortar::BrokenCurve f = mortar::multiplier_function(space, t, unit);
+  mortar::Series s{"psi_" + std::to_string(i + 1), {}, {}, "lines",
+                   std::string("lw 2 lc rgb '") + colours[i % 7] + "'"};
+  for (int e = 0; e < t.num_elements(); ++e) {
+    if (f.left[e] == 0 && f.right[e] == 0) continue;
+    s.x.insert(s.x.end(), {t.x[e], t.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
+    s.y.insert(s.y.end(), {f.left[e], f.right[e], 0.0});
+  }
+  return s;
+}
+
+mortar::Figure basis_panel(const mortar::MultiplierSpace& space, const mortar::InterfaceTrace& t,
+                           const std::string& title) {
+  mortar::Figure fig;
+  fig.title = title;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "psi_i(x) [-]";
+  fig.key = "outside right top";
+  fig.settings = {"set yrange [-1.2:2.2]", "set grid xtics", "set xtics (" + [&] {
+                    std::string ticks;
+                    for (int j = 0; j < t.num_nodes(); ++j)
+                      ticks += (j ? ", " : "") + std::string("'x_") + std::to_string(j) + "' " + std::to_string(t.x[j]);
+                    return ticks;
+                  }() + ")"};
+  for (int i = 0; i < space.dim(); ++i) fig.series.push_back(basis_function(space, t, i));
+  return fig;
+}
+
+mortar::Series column_series(const mortar::ConvergenceTable& table, const std::string& x, const std::string& y,
+                             const std::string& title, const std::string& style) {
+  return {title, table.column(x), table.column(y), "linespoints", style};
+}
+}  // namespace
+
+void plot_dual_basis(const std::string& folder, bool run) {
+  const mortar::InterfaceTrace t = mortar::uniform_trace(1.0, 6, 0.3, 3);
+  mortar::Figure fig = basis_panel(mortar::end_modified_p1(t), t,
+                                   "the hats of M_h^1 (constant on the end elements): D is tridiagonal");
+  fig.height = 420;
+  mortar::Figure dual = basis_panel(mortar::dual_end_modified_p1(t), t,
+                                    "the dual basis on the same nodes: int psi_i phi_j = 0 for i != j, D is diagonal");
+  dual.height = 420;
+  fig.panels.push_back(dual);
+  mortar::write_figure(folder, "dual_basis", fig, run);
+}
+
+void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTable& dual,
+                          const mortar::ConvergenceTable* standard, bool run) {
+  mortar::Figure fig;
+  fig.title = "standard and dual multipliers: errors against h (h2/h1 fixed)";
+  fig.xlabel = "h = max(h1, h2) [m]";
+  fig.ylabel = "relative error [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "bottom right";
+  fig.series.push_back(column_series(dual, "h", "err_energy", "dual: u, energy", "pt 7 lw 2 lc rgb '#d62728'"));
+  fig.series.push_back(column_series(dual, "h", "err_pressure_function", "dual: lambda_h as a function, L2",
+                                     "pt 5 lw 2 lc rgb '#ff7f0e'"));
+  fig.series.push_back(column_series(dual, "h", "err_pressure", "dual: coefficients at the nodes, L2",
+                                     "pt 9 lw 2 lc rgb '#9467bd'"));
+  if (standard != nullptr) {
+    fig.series.push_back(column_series(*standard, "h", "err_energy", "standard: u, energy", "pt 6 dt 2 lw 2 lc rgb '#1f77b4'"));
+    fig.series.push_back(column_series(*standard, "h", "err_pressure", "standard: lambda_h, L2",
+                                       "pt 8 dt 2 lw 2 lc rgb '#2ca02c'"));
+  }
+  fig.slopes = {{1.0, 0, 0.4, "slope 1: energy, Theorem 4.2", ""}, {1.5, 2, 0.4, "slope 3/2", ""}};
+  mortar::write_figure(folder, "standard_vs_dual", fig, run);
+}
+
+void plot_bases_against_time(const std::string& folder, const mortar::ConvergenceTable& dual,
+                             const mortar::ConvergenceTable* standard, bool run) {
+  mortar::Figure fig;
+  fig.title = "standard and dual multipliers: energy error against wall time";
+  fig.xlabel = "wall time of the level [s]";
+  fig.ylabel = "relative error, broken energy norm [-]";
+  fig.log_x = fig.log_y = true;
+  fig.key = "top right";
+  fig.series.push_back(column_series(dual, "time_s", "err_energy", "dual: condensed, one Cholesky of T^T K T",
+                                     "pt 7 lw 2 lc rgb '#d62728'"));
+  if (standard != nullptr)
+    fig.series.push_back(column_series(*standard, "time_s", "err_energy", "standard: saddle point through S",
+                                       "pt 6 dt 2 lw 2 lc rgb '#1f77b4'"));
+  fig.series.push_back(column_series(dual, "limit_s", "err_energy", "physical limit (assemble K, Cholesky, one solve)",
+                                     "pt 1 dt 3 lw 2 lc rgb '#000000'"));
+  mortar::write_figure(folder, "error_vs_time_bases", fig, run);
+}
+
+void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel& level,
+                        const mortar::ManufacturedContact& exact, bool run) {
+  const mortar::BilateralSolution& s = level.solution;
+  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(s.gamma.space.dim());
+  for (std::size_t r = 0; r < s.constraints.row_source.size(); ++r) coefficients[s.constraints.row_source[r]] = s.lambda[r];
+  const mortar::BrokenCurve f = mortar::multiplier_function(s.gamma.space, s.gamma.nonmortar_trace, coefficients);
+  const auto panel = [&](double a, double b, const std::string& title) {
+    mortar::Figure fig;
+    fig.title = title;
+    fig.xlabel = "x along Gamma_c [m]";
+    fig.ylabel = "contact pressure [Pa]";
+    fig.key = "outside right top";
+    fig.height = 420;
+    mortar::Series p{"exact -sigma_N", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
+    mortar::Series function{"sum lambda_i psi_i (dual)", {}, {}, "lines", "lw 1.5 lc rgb '#ff7f0e'"};
+    mortar::Series nodes{"lambda_i at their nodes", {}, {}, "points", "pt 7 ps 0.9 lc rgb '#9467bd'"};
+    for (int k = 0; k <= 400; ++k) {
+      const double x = a + (b - a) * k / 400.0;
+      p.x.push_back(x);
+      p.y.push_back(exact.pressure(x));
+    }
+    for (std::size_t e = 0; e + 1 < f.x.size(); ++e) {
+      if (f.x[e + 1] < a || f.x[e] > b) continue;
+      function.x.insert(function.x.end(), {f.x[e], f.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
+      function.y.insert(function.y.end(), {f.left[e], f.right[e], 0.0});
+    }
+    for (std::size_t j = 0; j < level.pressure.x.size(); ++j)
+      if (level.pressure.x[j] >= a && level.pressure.x[j] <= b) {
+        nodes.x.push_back(level.pressure.x[j]);
+        nodes.y.push_back(level.pressure.value[j]);
+      }
+    fig.series = {p, function, nodes};
+    fig.settings = {"set xrange [" + std::to_string(a) + ":" + std::to_string(b) + "]"};
+    return fig;
+  };
+  const double L = level.pressure.x.back();
+  const double h = s.gamma.nonmortar_trace.max_element_length();
+  mortar::Figure fig = panel(0, L, "dual multipliers, coarsest level: the pressure on Gamma_c");
+  fig.panels.push_back(panel(0.5 * L - 3 * h, 0.5 * L + 3 * h, "zoom on six elements: the function jumps at every node"));
+  mortar::write_figure(folder, "dual_pressure", fig, run);
+}
+
+void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, bool run) {
+  const HertzLevel &s = study.standard.back(), &d = study.dual.back();
+  // The contact zone and two elements beyond it on each side.
+  const double L = s.pressure.x.back(), centre = 0.5 * L;
+  const double a = 1.3 * std::max(s.half_width, d.half_width);
+  mortar::Figure fig;
+  fig.title = "Hertz scene, finest level: contact pressure of both bases";
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = "contact pressure [Pa]";
+  mortar::Series standard{"standard: lambda_h (P1, >= 0)", {}, {}, "linespoints", "pt 6 ps 0.7 lw 2 lc rgb '#1f77b4'"};
+  mortar::Series coefficients{"dual: lambda_i at their nodes", {}, {}, "points", "pt 7 ps 0.7 lc rgb '#9467bd'"};
+  mortar::Series function{"dual: sum lambda_i psi_i", {}, {}, "lines", "lw 1 lc rgb '#ff7f0e'"};
+  for (std::size_t j = 0; j < s.pressure.x.size(); ++j)
+    if (std::fabs(s.pressure.x[j] - centre) <= a) {
+      standard.x.push_back(s.pressure.x[j]);
+      standard.y.push_back(s.pressure.value[j]);
+    }
+  for (std::size_t j = 0; j < d.pressure.x.size(); ++j)
+    if (std::fabs(d.pressure.x[j] - centre) <= a) {
+      coefficients.x.push_back(d.pressure.x[j]);
+      coefficients.y.push_back(d.pressure.value[j]);
+    }
+  for (std::size_t e = 0; e + 1 < d.function.x.size(); ++e)
+    if (std::fabs(d.function.x[e] - centre) <= a) {
+      function.x.insert(function.x.end(), {d.function.x[e], d.function.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
+      function.y.insert(function.y.end(), {d.function.left[e], d.function.right[e], 0.0});
+    }
+  fig.series = {function, standard, coefficients};
+  fig.key = "bottom center";
+  fig.settings = {"set xzeroaxis lt -1"};
+  mortar::write_figure(folder, "hertz_pressure", fig, run);
+}
+
+}  // namespace chapter06

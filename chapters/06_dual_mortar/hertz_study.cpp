@@ -1,0 +1,135 @@
+#include "hertz_study.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include "common/contact/constraints.hpp"
+#include "common/contact/contact_solvers.hpp"
+#include "common/contact/dual_condensation.hpp"
+#include "common/contact/bilateral_contact.hpp"
+
+namespace chapter06 {
+
+std::string basis_name(Basis basis) { return basis == Basis::dual ? "dual" : "standard"; }
+
+HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, const HertzLevel* coarser) {
+  const mortar::TwoBodyGeometry geometry = mortar::two_body_geometry(o.bodies, o.n0 << level, 1.0);
+  const mortar::TwoBodies bodies = mortar::make_two_bodies(geometry, mortar::Material(o.bodies.E1, o.bodies.nu1),
+                                                           mortar::Material(o.bodies.E2, o.bodies.nu2));
+  const double L = o.bodies.L, R = o.R;
+  const auto gap = [L, R](double x) { return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R); };
+  HertzLevel r;
+  r.basis = basis;
+  r.level = level;
+  r.dofs = bodies.num_dofs();
+  std::optional<mortar::SceneData> scene;
+  mortar::ContactInterface gamma;
+  mortar::Constraints constraints;
+  Eigen::VectorXd lambda;
+  const auto solve = [&] {
+    // 1. The scene and K, as in chapter 5.
+    scene = mortar::pressed_between_plates(bodies, o.delta);
+    mortar::SparseMatrix K = bodies.stiffness();
+    // 2. Gamma_c with the chosen basis: the hats of M_h^1 or their dual functions.
+    gamma = mortar::contact_traces(bodies, o.bodies.nonmortar - 1);
+    gamma.grid = mortar::merge_traces(gamma.nonmortar_trace, gamma.mortar_trace);
+    gamma.space = basis == Basis::dual ? mortar::dual_end_modified_p1(gamma.nonmortar_trace)
+                                       : mortar::end_modified_p1(gamma.nonmortar_trace);
+    gamma.matrices = mortar::mortar_matrices(gamma.nonmortar_trace, gamma.mortar_trace, gamma.grid, gamma.space);
+    // 3. B u <= G: int psi_i [u_h.n] <= int psi_i g. With the dual psi_i this is the weighted
+    //    gap of Hueber and Wohlmuth: psi_i changes sign, so it tests a weighted mean of the
+    //    penetration, not its value at a point or its mean against a positive weight.
+    constraints = mortar::constraint_rows(bodies, gamma, mortar::integral_matching_rows(gamma),
+                                          scene->prescribed_mask(bodies.num_dofs()));
+    const Eigen::VectorXd G = mortar::tested_gap(gamma, constraints, gap);
+    // 4. Dirichlet elimination; one stiffness matrix at a time from here on.
+    mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, scene->F, scene->dirichlet);
+    mortar::SparseMatrix().swap(K);
+    mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, constraints, G);
+    mortar::SparseMatrix().swap(system.K);
+    Eigen::VectorXd u;
+    if (basis == Basis::dual) {
+      // 5. Dual: condense (u_s from the weighted gap w), then the semismooth Newton method.
+      mortar::CondensedContact condensed = mortar::condense_contact(reduced);
+      mortar::SparseMatrix().swap(reduced.K);
+      mortar::DualContactOptions options;
+      if (coarser != nullptr && o.nested_start && !coarser->active_x.empty()) {
+        const double left = coarser->active_x.front(), right = coarser->active_x.back();
+        for (int node : constraints.row_node) {
+          const double x = gamma.nonmortar_trace.x[node];
+          options.initial_active.push_back(x >= left && x <= right);
+        }
+      }
+      const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, options);
+      lambda = x.lambda;
+      r.iterations = x.iterations;
+      r.active_sizes = x.active_sizes;
+      r.residual = x.residual;
+    } else {
+      // 5. Standard: chapter 5's primal-dual active set on the multipliers, through S.
+      mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
+      problem.K.swap(reduced.K);
+      problem.B.swap(reduced.B);
+      const mortar::ContactSolution x = mortar::solve_contact(problem, mortar::ContactSolverOptions{});
+      lambda = x.lambda;
+      r.iterations = x.iterations;
+      r.residual = x.residual;
+    }
+  };
+  r.timing = mortar::time_against_limit(solve, [&] { return mortar::two_body_limit_matrix(bodies, *scene); });
+
+  // 6. What the multipliers say: the coefficients at their nodes, the function they make, the
+  //    total force int lambda_h = sum_i lambda_i int psi_i (the same int psi_i for both bases).
+  r.multipliers = static_cast<int>(lambda.size());
+  r.h1 = gamma.nonmortar_trace.max_element_length();
+  r.pressure = mortar::contact_pressure(gamma, constraints, lambda);
+  r.total_force = mortar::total_contact_force(gamma, constraints, lambda);
+  r.max_pressure = *std::max_element(r.pressure.value.begin(), r.pressure.value.end());
+  r.half_width = mortar::contact_zone(r.pressure).half_width();
+  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(gamma.space.dim());
+  for (std::size_t k = 0; k < constraints.row_source.size(); ++k) {
+    coefficients[constraints.row_source[k]] = lambda[k];
+    if (lambda[k] > 0) r.active_x.push_back(gamma.nonmortar_trace.x[constraints.row_node[k]]);
+  }
+  r.function = mortar::multiplier_function(gamma.space, gamma.nonmortar_trace, coefficients);
+  r.min_function = std::min(*std::min_element(r.function.left.begin(), r.function.left.end()),
+                            *std::min_element(r.function.right.begin(), r.function.right.end()));
+  return r;
+}
+
+HertzStudy run_hertz_study(const HertzOptions& o) {
+  HertzStudy study;
+  for (int level = 0; level < o.levels; ++level) {
+    for (Basis basis : {Basis::standard, Basis::dual}) {
+      auto& list = basis == Basis::dual ? study.dual : study.standard;
+      list.push_back(solve_hertz_level(o, level, basis, list.empty() ? nullptr : &list.back()));
+      const HertzLevel& r = list.back();
+      std::printf("hertz level %d, %-8s  dofs=%d  total_force=%.10g  iterations=%d  time_s=%.4g  limit_s=%.4g  "
+                  "ratio=%.2f\n",
+                  level, basis_name(basis).c_str(), r.dofs, r.total_force, r.iterations, r.timing.time_s,
+                  r.timing.limit_s, r.timing.ratio());
+    }
+  }
+  return study;
+}
+
+void write_hertz_csv(const std::string& path, const HertzStudy& study) {
+  std::ofstream out(path);
+  out << "basis,level,h1,dofs,multipliers,total_force,max_pressure,half_width,iterations,residual,"
+         "min_function,time_s,limit_s,limit_ratio\n";
+  char line[512];
+  for (const auto* list : {&study.standard, &study.dual})
+    for (const HertzLevel& r : *list) {
+      std::snprintf(line, sizeof line, "%s,%d,%.10g,%d,%d,%.12g,%.10g,%.10g,%d,%.3g,%.6g,%.6g,%.6g,%.4f\n",
+                    basis_name(r.basis).c_str(), r.level, r.h1, r.dofs, r.multipliers, r.total_force, r.max_pressure,
+                    r.half_width, r.iterations, r.residual, r.min_function, r.timing.time_s, r.timing.limit_s,
+                    r.timing.ratio());
+      out << line;
+    }
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace chapter06

@@ -1,0 +1,55 @@
+// Part 2 of chapter 6: unilateral contact on chapter 5's Hertz scene, with the standard basis
+// of M_h^1 (chapter 5's primal-dual active set on S = B K^{-1} B^T) and with the dual basis
+// (the weighted gap and the semismooth Newton method in the displacements), on the same meshes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/contact/contact_fields.hpp"
+#include "common/interface/dual_basis.hpp"
+#include "common/linalg/physical_limit.hpp"
+#include "common/study/bilateral_study.hpp"
+
+namespace chapter06 {
+
+// Chapter 5's Hertz scene: top of body 1 moved by (0, -delta), bottom of body 2 clamped,
+// gap (x - L/2)^2 / (2R); its bodies (square blocks, one material) unless given otherwise.
+struct HertzOptions {
+  mortar::TwoBodyOptions bodies;
+  int n0 = 12, levels = 5;
+  double R = 1, delta = 0.02;
+  bool nested_start = true;  // dual: each level's first active set from the level below
+};
+
+enum class Basis { standard, dual };
+std::string basis_name(Basis basis);
+
+struct HertzLevel {
+  Basis basis = Basis::standard;
+  int level = 0, dofs = 0, multipliers = 0;
+  double h1 = 0;
+  double total_force = 0, max_pressure = 0, half_width = 0;
+  int iterations = 0;      // standard: active-set steps on S; dual: Newton steps (one factorization each)
+  std::vector<int> active_sizes;  // dual: |A| before each Newton step
+  double residual = 0;     // complementarity residual
+  double min_function = 0; // min of sum_i lambda_i psi_i on Gamma_c (negative: the dual basis)
+  mortar::TimedLevel timing;
+  mortar::InterfaceCurve pressure;  // coefficients at their nodes
+  mortar::BrokenCurve function;     // sum_i lambda_i psi_i
+  std::vector<double> active_x;     // nodes of the active rows
+};
+
+// One level with one basis; `coarser` (may be null) gives the dual Newton method its first
+// active set: the rows whose node lies inside the coarser level's active zone.
+HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, const HertzLevel* coarser);
+
+struct HertzStudy {
+  std::vector<HertzLevel> standard, dual;
+};
+HertzStudy run_hertz_study(const HertzOptions& o);
+
+// hertz.csv: one row per level and basis.
+void write_hertz_csv(const std::string& path, const HertzStudy& study);
+
+}  // namespace chapter06
