@@ -42,12 +42,19 @@ class PivotCrosses {
       for (Eigen::Index slot : slots_[i]) values_[i].push_back(A.valuePtr()[slot]);
     }
   }
-  // Rows and columns of the active pivots zeroed, the others as in T^T K T.
+  // Rows and columns of the active pivots zeroed, the others as in T^T K T. Two pivots next
+  // to each other share the entries between them: restore everything first, then zero, so an
+  // inactive neighbour cannot give an active pivot's entry back.
   void apply(const std::vector<bool>& active) {
+    restore();
     for (std::size_t i = 0; i < slots_.size(); ++i)
-      for (std::size_t k = 0; k < slots_[i].size(); ++k) A_.valuePtr()[slots_[i][k]] = active[i] ? 0.0 : values_[i][k];
+      if (active[i])
+        for (Eigen::Index slot : slots_[i]) A_.valuePtr()[slot] = 0.0;
   }
-  void restore() { apply(std::vector<bool>(slots_.size(), false)); }
+  void restore() {
+    for (std::size_t i = 0; i < slots_.size(); ++i)
+      for (std::size_t k = 0; k < slots_[i].size(); ++k) A_.valuePtr()[slots_[i][k]] = values_[i][k];
+  }
 
  private:
   Eigen::Index position(int column, Eigen::Index row) const {
