@@ -16,7 +16,7 @@ packages=(g++ cmake make libeigen3-dev libgsl-dev gnuplot-nox fonts-dejavu-core
 book_packages=(pandoc texlive-xetex texlive-latex-recommended texlive-fonts-recommended lmodern
                fonts-dejavu-core poppler-utils)
 chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
-          ch05_unilateral_uzawa)
+          ch05_unilateral_uzawa ch06_dual_mortar)
 jobs=$(nproc 2>/dev/null || echo 2)
 logs=build/logs/${1:-none}
 step_count=0

@@ -211,3 +211,4 @@ TEST(FuzzPrograms, ch02_command_lines_end_in_status_0_or_2) { fuzz(CH02); }
 TEST(FuzzPrograms, ch03_command_lines_end_in_status_0_or_2) { fuzz(CH03); }
 TEST(FuzzPrograms, ch04_command_lines_end_in_status_0_or_2) { fuzz(CH04); }
 TEST(FuzzPrograms, ch05_command_lines_end_in_status_0_or_2) { fuzz(CH05); }
+TEST(FuzzPrograms, ch06_command_lines_end_in_status_0_or_2) { fuzz(CH06); }

@@ -119,7 +119,7 @@ TEST(DualCondensation, zero_load_presses_only_where_the_weighted_gap_is_negative
     }
     EXPECT_GE(negative, 1) << "n1 = " << n1;
     const double force = x.lambda.sum();
-    std::printf("n1 = %d: %d rows with G_i < 0, pressed with a total of %.3e\n", n1, negative, force);
+    std::printf("n1 = %d: %d rows with G_i < 0, sum of lambda_i %.3e\n", n1, negative, force);
     EXPECT_GT(force, 0.0);
     EXPECT_LT(force, 0.5 * previous_force) << "n1 = " << n1;
     previous_force = force;

@@ -54,20 +54,21 @@ int main(int argc, char** argv) {
                               "Dual (biorthogonal) mortar multipliers: condensation of the bilateral problem, "
                               "and the semismooth Newton method for unilateral contact.");
   parser.add_flag("no-compare", no_compare, "skip the standard mortar basis (chapter 4) on the same levels");
-  parser.add_flag("no-hertz", no_hertz, "skip part 2, unilateral contact on chapter 5's Hertz scene");
-  parser.add_int("hertz-levels", hertz.levels, "levels of the Hertz scene (chapter 5's meshes, 12 elements first)",
-                 mortar::Range::closed(1, 9));
+  parser.add_flag("no-hertz", no_hertz,
+                  "skip part 2, unilateral contact on chapter 5's Hertz scene (same --n0, --levels, --h-ratio)");
   std::string hertz_start = "nested";
   parser.add_choice("hertz-start", hertz_start, {"nested", "empty"},
                     "the dual Newton method's first active set: from the level below, or none");
   mortar::parse_bilateral_options(parser, o, argc, argv);
-  // Part 2 runs on chapter 5's bodies (square blocks of one material) unless materials are given.
+  // Part 2 runs on chapter 5's bodies (square blocks of one material) unless materials are
+  // given, with the same sizes along Gamma_c as part 1.
   hertz.bodies = o;
   hertz.bodies.H1 = hertz.bodies.H2 = 1;
   if (!parser.given("E2")) hertz.bodies.E2 = 1;
   if (!parser.given("nu2")) hertz.bodies.nu2 = 0.3;
   hertz.nested_start = hertz_start == "nested";
-  if (o.quick && !parser.given("hertz-levels")) hertz.levels = 3;
+  hertz.n0 = o.n0;
+  hertz.levels = o.levels;
   try {
     // 2. Chapter 4's exact solution: two materials glued in y, sliding in x.
     const mortar::ManufacturedContact exact = mortar::manufactured_solution(o);
