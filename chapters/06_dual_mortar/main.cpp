@@ -24,6 +24,7 @@
 #include "bilateral_level.hpp"
 #include "figures.hpp"
 #include "hertz_study.hpp"
+#include "partial_coverage.hpp"
 #include "common/interface/dual_basis.hpp"
 #include "common/study/bilateral_study.hpp"
 #include "common/study/contact_plots.hpp"
@@ -115,7 +116,17 @@ int main(int argc, char** argv) {
                 dual.patch_integral.rel_error);
     std::printf("finest level: %d dofs, %.3f s, %.2f x the physical limit (%.3f s)\n", finest.bodies.num_dofs(),
                 finest.time_s, finest.time_s / finest.limit_s, finest.limit_s);
-    // 5. Chapter 4's standard basis on the same levels, for the comparison (standard.csv).
+    // 5. The hard case of dual bases that the scenes above cannot have: a non-mortar element
+    //    covered in part by the mortar side (1D traces, 24 non-mortar elements).
+    const auto partial = chapter06::partial_coverage(24, {1.0, 0.75, 0.5, 0.25, 0.1});
+    chapter06::write_partial_coverage_csv(o.out + "/partial_coverage.csv", partial);
+    std::printf("partly covered element (mortar side ends at theta h inside it):\n%8s %14s %20s %18s %22s\n",
+                "theta", "max|D_ij|/D_ii", "min D_ii/int phi_i", "|w1 - 1|, D whole", "|w1 - 1|, D diagonal");
+    for (const auto& c : partial)
+      std::printf("%8.2f %14.3e %20.3f %18.3e %22.3e\n", c.covered, c.offdiagonal, c.diagonal_ratio_min,
+                  c.constant_error_full, c.constant_error_diagonal);
+
+    // 6. Chapter 4's standard basis on the same levels, for the comparison (standard.csv).
     std::unique_ptr<mortar::BilateralStudy> standard;
     if (!no_compare) {
       std::printf("the standard basis of M_h^1 (chapter 4), same levels:\n");
@@ -125,7 +136,7 @@ int main(int argc, char** argv) {
       print_comparison(dual.table, standard->table);
     }
 
-    // 6. Figures.
+    // 7. Figures.
     const bool run = !o.no_plot;
     chapter06::plot_dual_basis(o.out, run);
     const mortar::ConvergenceTable* standard_table = standard ? &standard->table : nullptr;
