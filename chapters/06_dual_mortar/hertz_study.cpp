@@ -56,8 +56,11 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
       mortar::CondensedContact condensed = mortar::condense_contact(reduced);
       mortar::SparseMatrix().swap(reduced.K);
       mortar::DualContactOptions options;
-      if (coarser != nullptr && o.nested_start && !coarser->active_x.empty()) {
-        const double left = coarser->active_x.front(), right = coarser->active_x.back();
+      if (coarser != nullptr && o.nested_start && !coarser->zone.empty) {
+        // between the coarser level's outermost active nodes (their halfway points to the
+        // inactive neighbours were tried too: 2, 2, 2, 1, 2 steps on levels 1-5 against 1, 2, 1,
+        // 2, 1 from the active nodes)
+        const double left = coarser->zone.left_active, right = coarser->zone.right_active;
         for (int node : constraints.row_node) {
           const double x = gamma.nonmortar_trace.x[node];
           options.initial_active.push_back(x >= left && x <= right);
@@ -88,11 +91,11 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
   r.pressure = mortar::contact_pressure(gamma, constraints, lambda);
   r.total_force = mortar::total_contact_force(gamma, constraints, lambda);
   r.max_pressure = *std::max_element(r.pressure.value.begin(), r.pressure.value.end());
-  r.half_width = mortar::contact_zone(r.pressure).half_width();
+  r.zone = mortar::contact_zone(r.pressure);
+  r.half_width = r.zone.half_width();
   Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(gamma.space.dim());
   for (std::size_t k = 0; k < constraints.row_source.size(); ++k) {
     coefficients[constraints.row_source[k]] = lambda[k];
-    if (lambda[k] > 0) r.active_x.push_back(gamma.nonmortar_trace.x[constraints.row_node[k]]);
   }
   r.function = mortar::multiplier_function(gamma.space, gamma.nonmortar_trace, coefficients);
   r.min_function = std::min(*std::min_element(r.function.left.begin(), r.function.left.end()),

@@ -37,11 +37,11 @@ struct HertzLevel {
   mortar::TimedLevel timing;
   mortar::InterfaceCurve pressure;  // coefficients at their nodes
   mortar::BrokenCurve function;     // sum_i lambda_i psi_i
-  std::vector<double> active_x;     // nodes of the active rows
+  mortar::ContactZone zone;         // read off the coefficients (contact_fields.hpp)
 };
 
 // One level with one basis; `coarser` (may be null) gives the dual Newton method its first
-// active set: the rows whose node lies inside the coarser level's active zone.
+// active set: the rows whose node lies inside the coarser level's contact zone.
 HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, const HertzLevel* coarser);
 
 struct HertzStudy {
