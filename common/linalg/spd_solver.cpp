@@ -60,6 +60,15 @@ namespace {
 // ratios of 1e6 between two bodies do not look singular.
 constexpr double singular_pivot_ratio = 1e-13;
 
+// K's diagonal, after checking that it is positive (else K cannot be SPD).
+Eigen::VectorXd positive_diagonal(const SparseMatrix& K) {
+  Eigen::VectorXd diagonal = K.diagonal();
+  if (!(diagonal.minCoeff() > 0))
+    throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" + std::to_string(diagonal.minCoeff()) +
+                             "): it is not positive definite");
+  return diagonal;
+}
+
 [[noreturn]] void report_singular(const std::string& backend, Eigen::Index dof, double ratio) {
   throw std::runtime_error("SpdSolver (" + backend + "): K is singular to working precision: the "
                            "pivot of unknown " + std::to_string(dof) + " keeps only " +
@@ -88,11 +97,7 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix> {
       check_status("analysis", K.rows());
       if (m_cholmodFactor == nullptr) fail("analysis", "no factor returned", K.rows());
     }
-    const ProfilePhase phase("factorization");
-    factorize(K);
-    check_status("factorization", K.rows());
-    if (m_cholmodFactor->x == nullptr && m_cholmodFactor->minor == m_cholmodFactor->n)
-      fail("factorization", "no numerical values in the factor", K.rows());
+    refactorize_checked(K);
   }
   // The numerical factorization alone, on the analysis of the last compute_checked: K must
   // have the pattern the analysis saw.
@@ -315,10 +320,7 @@ void SpdSolver::factorize(const SparseMatrix& K, SpdOrdering ordering, std::vect
   impl_->factorized = false;
   impl_->size = K.rows();
   if (given.empty()) impl_->last.clear();
-  const Eigen::VectorXd diagonal = K.diagonal();
-  if (!(diagonal.minCoeff() > 0))
-    throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" +
-                             std::to_string(diagonal.minCoeff()) + "): it is not positive definite");
+  const Eigen::VectorXd diagonal = positive_diagonal(K);
   if (backend_ == SpdBackend::simplicial_ldlt) {
     {
       const ProfilePhase phase("factorization");
@@ -338,10 +340,7 @@ void SpdSolver::refactorize(const SparseMatrix& K) {
   if (!impl_->factorized || K.rows() != impl_->size)
     throw std::logic_error("SpdSolver::refactorize needs a factorize of a matrix of the same size first");
   impl_->factorized = false;
-  const Eigen::VectorXd diagonal = K.diagonal();
-  if (!(diagonal.minCoeff() > 0))
-    throw std::runtime_error("SpdSolver: K has a diagonal entry <= 0 (" +
-                             std::to_string(diagonal.minCoeff()) + "): it is not positive definite");
+  const Eigen::VectorXd diagonal = positive_diagonal(K);
   if (backend_ == SpdBackend::simplicial_ldlt) {
     {
       const ProfilePhase phase("factorization");
