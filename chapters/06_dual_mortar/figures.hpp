@@ -13,7 +13,7 @@ namespace chapter06 {
 void plot_dual_basis(const std::string& folder, bool run);
 
 // standard_vs_dual.png: energy error and pressure errors against h for both bases;
-// error_vs_time_bases.png: energy error against wall time for both, beside the limit.
+// error_vs_time.png: energy error against wall time for both, beside the limit.
 // `standard` may be null (--no-compare).
 void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTable& dual,
                           const mortar::ConvergenceTable* standard, bool run);
