@@ -273,10 +273,11 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
   timing.log_x = timing.log_y = true;
   timing.key = "outside right top";
   timing.width = 1200;
-  const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'", "'#2ca02c'"};
+  const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'", "'#2ca02c'", "'#9467bd'"};
   int k = 0;
   for (const std::string matching : {"integral", "pointwise"})
-    for (const std::string solver : {"pdas", "uzawa-nesterov", "uzawa", "pdas-simplicial-ldlt"}) {
+    for (const std::string solver : {"pdas", "uzawa-nesterov", "uzawa", "pdas-simplicial-ldlt", "dual-newton"}) {
+      if (solver == "dual-newton" && matching != "integral") continue;  // chapter 6: integral only
       Series it{matching + ", " + solver, {}, {}, "linespoints", ""}, tm = it;
       for (const SolverRun& r : runs)
         if (r.matching == matching && r.solver == solver) {
@@ -285,7 +286,7 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
           tm.x.push_back(r.time_s);
           tm.y.push_back(std::max(r.error, 1e-16));
         }
-      const std::string style = std::string("lw 2 lc rgb ") + colours[k % 4] +
+      const std::string style = std::string("lw 2 lc rgb ") + colours[k % 5] +
                                 (matching == "integral" ? " pt 7" : " pt 6 dt 2");
       it.extra = tm.extra = style;
       if (solver != "pdas-simplicial-ldlt") iterations.series.push_back(it);  // same count as pdas

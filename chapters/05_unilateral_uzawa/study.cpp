@@ -249,20 +249,25 @@ std::vector<SolverRun> compare_solvers(const Options& o, const mortar::Manufactu
     std::string label, solver;
     bool accelerate;
     mortar::SpdBackend backend;
+    bool dual_newton = false;
   };
   // The same answer four ways: the active set, Uzawa with and without momentum (all on the
-  // fastest Cholesky), and the active set on Eigen's readable SimplicialLDLT.
+  // fastest Cholesky), and the active set on Eigen's readable SimplicialLDLT. A fifth for
+  // integral matching: chapter 6's dual basis and semismooth Newton method (a nearby discrete
+  // problem, the weighted gap, from an empty first active set).
   const mortar::SpdBackend fast = mortar::fastest_spd_backend(), readable = mortar::SpdBackend::simplicial_ldlt;
   const Variant variants[] = {{"pdas", "pdas", true, fast},
                               {"uzawa-nesterov", "uzawa", true, fast},
                               {"uzawa", "uzawa", false, fast},
-                              {"pdas-simplicial-ldlt", "pdas", true, readable}};
+                              {"pdas-simplicial-ldlt", "pdas", true, readable},
+                              {"dual-newton", "pdas", true, fast, true}};
   std::vector<SolverRun> runs;
   finest_by_matching.clear();
   for (const std::string matching : {"integral", "pointwise"}) {
     std::unique_ptr<UnilateralLevel> finest;
     for (int level = 0; level < o.levels; ++level)
       for (const Variant& v : variants) {
+        if (v.dual_newton && matching != "integral") continue;
         mortar::ContactSolverOptions solver = solver_options(o, v.solver, v.accelerate);
         solver.backend = v.backend;
         std::unique_ptr<UnilateralLevel> r;
@@ -271,6 +276,7 @@ std::vector<SolverRun> compare_solvers(const Options& o, const mortar::Manufactu
           // finest level is the one timed with repetitions)
           UnilateralSetup setup = level_setup(o, level, mortar::parse_matching(matching), solver);
           setup.repetitions = {1, 1, 0.0};
+          setup.dual_newton = v.dual_newton;
           r = std::make_unique<UnilateralLevel>(solve_unilateral_level(setup, exact));
         } catch (const std::runtime_error& e) {
           // one solver failing must not cost the others' results: say so and go on

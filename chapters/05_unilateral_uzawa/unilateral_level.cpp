@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/contact/bilateral_contact.hpp"
+#include "common/contact/dual_condensation.hpp"
 #include "common/fem/dirichlet.hpp"
 #include "common/study/stopwatch.hpp"
 
@@ -49,7 +50,8 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
     mortar::SparseMatrix K = r.bodies.stiffness();
     // 3. The interface: Gamma_c as chapter 4 builds it, both traces, their merged grid, M_h^1,
     //    D and M (chapter 4's level.cpp takes these steps one by one).
-    r.gamma = mortar::make_interface(r.bodies, setup.nonmortar);
+    r.gamma = setup.dual_newton ? mortar::make_dual_interface(r.bodies, setup.nonmortar)
+                                : mortar::make_interface(r.bodies, setup.nonmortar);
     // 4. The constraint rows of the chosen matching: chapter 3's pointwise rows at the nodes
     //    xi^1 or chapter 4's rows D, M against M_h^1, attached to the normal dofs as B.
     r.constraints = mortar::constraint_rows(r.bodies, r.gamma, mortar::matching_rows(r.gamma, setup.matching),
@@ -69,10 +71,23 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
     mortar::SparseMatrix().swap(system.K);
     // 7. The contact solve: min 1/2 u.Ku - f.u subject to B u <= G, by Uzawa or the active set
     //    (common/contact/contact_solvers.cpp); lambda >= 0 is the pressure's multiplier.
-    mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
-    problem.K.swap(reduced.K);
-    problem.B.swap(reduced.B);
-    r.solution = mortar::solve_contact(problem, setup.solver);
+    if (setup.dual_newton) {
+      // (chapter 6: D diagonal, the non-mortar normal dofs condensed, Newton in the displacements)
+      mortar::CondensedContact condensed = mortar::condense_contact(reduced);
+      mortar::SparseMatrix().swap(reduced.K);
+      mortar::DualContactOptions options;
+      options.backend = setup.solver.backend;
+      const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, options);
+      r.solution.u = x.u;
+      r.solution.lambda = x.lambda;
+      r.solution.iterations = x.iterations;
+      r.solution.residual = x.residual;
+    } else {
+      mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
+      problem.K.swap(reduced.K);
+      problem.B.swap(reduced.B);
+      r.solution = mortar::solve_contact(problem, setup.solver);
+    }
     r.u = system.expand(r.solution.u);
   };
   if (setup.measure_limit) {

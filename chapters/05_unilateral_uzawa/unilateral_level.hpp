@@ -19,6 +19,9 @@ struct UnilateralSetup {
   SceneParameters scene;
   bool measure_limit = true;  // time the physical limit (one more assembly and Cholesky of K)
   mortar::Repetitions repetitions;  // of the level and its limit, interleaved
+  // Chapter 6's method, for the solver comparison: the dual basis (integral matching only),
+  // the weighted gap and the semismooth Newton method in the displacements; solver unused.
+  bool dual_newton = false;
 };
 
 struct UnilateralLevel {

@@ -38,6 +38,10 @@ struct HertzLevel {
   mortar::InterfaceCurve pressure;  // coefficients at their nodes
   mortar::BrokenCurve function;     // sum_i lambda_i psi_i
   mortar::ContactZone zone;         // read off the coefficients (contact_fields.hpp)
+  // dual rows: ||p_dual - p_standard||_{L2} / ||p_standard||_{L2}, both the P1 curves of the
+  // coefficients at the nodes, on the same level (bounds how far the two bases' errors against
+  // any reference can differ)
+  double pressure_difference = 0;
 };
 
 // One level with one basis; `coarser` (may be null) gives the dual Newton method its first

@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
           .set("hertz_limit_ratio_standard", s.timing.ratio())
           .set("hertz_limit_ratio_dual", d.timing.ratio())
           .set("hertz_min_function_dual", d.min_function)
+          .set("hertz_pressure_rel_difference", d.pressure_difference)
           .set("hertz_complementarity_residual_dual", d.residual);
       std::printf("Hertz, finest level (%d dofs): total force standard %.8g, dual %.8g (relative difference %.2e); "
                   "iterations %d (active set on S) and %d (Newton, one factorization each); time %.2f and %.2f x "

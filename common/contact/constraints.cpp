@@ -2,8 +2,9 @@
 
 #include <stdexcept>
 
-#include "common/study/profile.hpp"
 #include "common/fem/quadrature.hpp"
+#include "common/interface/dual_basis.hpp"
+#include "common/study/profile.hpp"
 
 namespace mortar {
 
@@ -29,12 +30,22 @@ ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar) {
   return g;
 }
 
-ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol) {
+namespace {
+ContactInterface interface_with(const TwoBodies& bodies, int nonmortar, double merge_tol, bool dual) {
   ContactInterface g = contact_traces(bodies, nonmortar);
   g.grid = merge_traces(g.nonmortar_trace, g.mortar_trace, merge_tol);
-  g.space = end_modified_p1(g.nonmortar_trace);
+  g.space = dual ? dual_end_modified_p1(g.nonmortar_trace) : end_modified_p1(g.nonmortar_trace);
   g.matrices = mortar_matrices(g.nonmortar_trace, g.mortar_trace, g.grid, g.space);
   return g;
+}
+}  // namespace
+
+ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol) {
+  return interface_with(bodies, nonmortar, merge_tol, false);
+}
+
+ContactInterface make_dual_interface(const TwoBodies& bodies, int nonmortar) {
+  return interface_with(bodies, nonmortar, 1e-12, true);
 }
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;

@@ -42,6 +42,9 @@ ContactInterface contact_traces(const TwoBodies& bodies, int nonmortar);
 // All of ContactInterface: the traces, their merged grid, M_h^1 (end-modified P1 on the
 // non-mortar trace) and D, M on the merged grid. Chapter 4's level.cpp shows these steps.
 ContactInterface make_interface(const TwoBodies& bodies, int nonmortar, double merge_tol = 1e-12);
+// The same with the dual basis of chapter 6 (common/interface/dual_basis.hpp) in place of the
+// hats of M_h^1: D diagonal.
+ContactInterface make_dual_interface(const TwoBodies& bodies, int nonmortar);
 
 // The coefficients of each row of B before the normals and the global dofs are attached:
 // (B u)_row = sum_j nonmortar(row, j) u_nm,j.n_nm + sum_k mortar(row, k) u_m,k.n_m.
