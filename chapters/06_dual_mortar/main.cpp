@@ -15,10 +15,9 @@
 //   ch06_dual_mortar                        # h2/h1 = 3/2, up to about 215k dofs, then Hertz
 //   ch06_dual_mortar --h-ratio 1/3 --nonmortar 2
 //   ch06_dual_mortar --no-compare --no-hertz
+#include <cmath>
 #include <cstdio>
 #include <exception>
-
-#include <cmath>
 #include <memory>
 
 #include "bilateral_level.hpp"
