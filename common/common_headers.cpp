@@ -1,0 +1,2 @@
+// Nothing of its own: the target common_headers compiles the precompiled header only
+// (CMakeLists.txt).
