@@ -1,0 +1,34 @@
+// P2 (six-node) triangles for plane-strain elasticity (chapter 7 builds on them; paper: any
+// degree q, here q = 2). Nodes 0, 1, 2 are the vertices, 3, 4, 5 the midpoints of the edges
+// 0-1, 1-2, 2-0; the element is straight-sided, so the map from the reference triangle is
+// affine. In barycentric coordinates lambda_k:
+//     N_k = lambda_k (2 lambda_k - 1)  (vertices),     N_{3+k} = 4 lambda_k lambda_{k+1}  (midpoints),
+// and unknowns are ordered as in P1, (u_x, u_y) node after node: dof 2a + c.
+#pragma once
+
+#include <Eigen/Dense>
+#include <array>
+
+#include "common/fem/p1_elasticity.hpp"
+#include "common/fem/quadrature.hpp"
+
+namespace mortar {
+
+using P2ElementMatrix = Eigen::Matrix<double, 12, 12>;
+using P2StrainMatrix = Eigen::Matrix<double, 3, 12>;
+
+// eps = B (u_x0, u_y0, ..., u_x5, u_y5) at the point with barycentric coordinates lambda: the
+// gradients are grad N_k = (4 lambda_k - 1) grad lambda_k and
+// grad N_{3+k} = 4 (lambda_k grad lambda_{k+1} + lambda_{k+1} grad lambda_k), linear in x,
+// with grad lambda_k from the P1 strain matrix (constant on the triangle).
+P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& vertices, const Eigen::Vector3d& lambda);
+
+// B is linear, so B^T C B is a quadratic: a triangle rule of degree 2 integrates K_T exactly.
+constexpr int p2_stiffness_degree = 2;
+
+// K_T = int_T B^T C B, by the triangle rule of degree p2_stiffness_degree unless another is given.
+P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& vertices, const Material& material);
+P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& vertices, const Material& material,
+                                     const TriangleRule& rule);
+
+}  // namespace mortar
