@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "common/fem/mesh.hpp"
 #include "common/fem/p2_elasticity.hpp"
 
 using namespace mortar;
@@ -96,4 +97,76 @@ TEST(P2Elasticity, energy_of_a_quadratic_field_is_exact) {
 TEST(P2Elasticity, refuses_a_triangle_of_the_wrong_orientation) {
   const std::array<Eigen::Vector2d, 3> flipped = {skewed[0], skewed[2], skewed[1]};
   EXPECT_THROW(p2_element_stiffness(flipped, Material(1, 0.3)), std::invalid_argument);
+}
+
+TEST(P2Mesh, adds_one_midpoint_per_edge_and_keeps_the_sides_in_order) {
+  RectangleSpec spec;
+  spec.x1 = 2;
+  spec.nx = 4;
+  spec.ny = 3;
+  const Mesh p1 = rectangle_mesh(spec);
+  const P2Mesh m = p2_mesh(p1);
+  const int edges = 4 * 4 + 3 * 5 + 4 * 3;  // horizontal, vertical, diagonal
+  EXPECT_EQ(m.num_vertices, 20);
+  EXPECT_EQ(m.num_nodes(), 20 + edges);
+  EXPECT_EQ(m.triangles.size(), p1.triangles.size());
+  const std::vector<int>& bottom = m.nodes_on(Side::bottom);
+  ASSERT_EQ(bottom.size(), 9u);  // 2 n + 1 nodes on Gamma_c
+  for (std::size_t k = 0; k < bottom.size(); ++k) {
+    EXPECT_NEAR(m.nodes[bottom[k]].x(), 0.25 * k, 1e-14);
+    EXPECT_NEAR(m.nodes[bottom[k]].y(), 0.0, 1e-14);
+  }
+  EXPECT_EQ(m.nodes_on(Side::left).size(), 7u);
+  // every midpoint lies halfway along its edge
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_LT((m.nodes[t[3 + k]] - 0.5 * (m.nodes[t[k]] + m.nodes[t[(k + 1) % 3]])).norm(), 1e-15);
+}
+
+// a(u, v) = v^T K u for quadratic u and v over a jittered rectangle: the assembled matrix is
+// exact on P2, the integral taken independently by a tensor Gauss rule on the rectangle.
+TEST(P2Mesh, assembly_is_exact_for_quadratic_fields) {
+  RectangleSpec spec;
+  spec.x1 = 2;
+  spec.nx = 5;
+  spec.ny = 4;
+  spec.jitter = 0.3;
+  const P2Mesh m = p2_mesh(rectangle_mesh(spec));
+  const Material material(1.7, 0.3);
+  const SparseMatrix K = assemble_p2_stiffness(m, material);
+  struct Quadratic {
+    Eigen::Matrix<double, 2, 6> c;  // u_i = c(i, .) . (1, x, y, x^2, xy, y^2)
+    Eigen::Vector2d at(const Eigen::Vector2d& p) const {
+      Eigen::Matrix<double, 6, 1> b;
+      b << 1, p.x(), p.y(), p.x() * p.x(), p.x() * p.y(), p.y() * p.y();
+      return c * b;
+    }
+    Eigen::Vector3d strain(const Eigen::Vector2d& p) const {
+      Eigen::Matrix<double, 6, 1> dx, dy;
+      dx << 0, 1, 0, 2 * p.x(), p.y(), 0;
+      dy << 0, 0, 1, 0, p.x(), 2 * p.y();
+      return {c.row(0).dot(dx), c.row(1).dot(dy), c.row(0).dot(dy) + c.row(1).dot(dx)};
+    }
+    Eigen::VectorXd nodal(const P2Mesh& mesh) const {
+      Eigen::VectorXd v(mesh.num_dofs());
+      for (int a = 0; a < mesh.num_nodes(); ++a) v.segment<2>(2 * a) = at(mesh.nodes[a]);
+      return v;
+    }
+  };
+  Quadratic u, v;
+  u.c << 0.1, 0.3, -0.2, 0.5, -0.7, 0.2, -0.3, 0.4, 0.6, -0.1, 0.25, 0.8;
+  v.c << 0.0, -0.5, 0.1, 0.3, 0.2, -0.6, 0.2, 0.1, -0.4, 0.7, -0.3, 0.1;
+  const SegmentRule g = gauss_legendre(4);  // exact to degree 7 in each direction
+  double exact = 0;
+  for (std::size_t i = 0; i < g.points.size(); ++i)
+    for (std::size_t j = 0; j < g.points.size(); ++j) {
+      const Eigen::Vector2d p(2 * g.points[i], g.points[j]);
+      exact += 2 * g.weights[i] * g.weights[j] * v.strain(p).dot(material.voigt() * u.strain(p));
+    }
+  const double computed = v.nodal(m).dot(K * u.nodal(m));
+  EXPECT_NEAR(computed, exact, 1e-12 * std::fabs(exact));
+  // and a P1 field is a P2 field: the rigid motions give K u = 0
+  Quadratic rotation;
+  rotation.c << 0.2, 0, -1, 0, 0, 0, -0.1, 1, 0, 0, 0, 0;
+  EXPECT_LT((K * rotation.nodal(m)).norm(), 1e-12 * K.norm());
 }

@@ -1,5 +1,11 @@
 #include "common/fem/p2_elasticity.hpp"
 
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
 namespace mortar {
 
 P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& x, const Eigen::Vector3d& lambda) {
@@ -38,6 +44,63 @@ P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& x, co
     const P2StrainMatrix B = p2_strain_matrix(x, Eigen::Vector3d(1 - s - t, s, t));
     K += (area * rule.weights[q]) * B.transpose() * C * B;
   }
+  return K;
+}
+
+}  // namespace mortar
+
+namespace mortar {
+
+std::array<Eigen::Vector2d, 3> P2Mesh::vertices(int t) const {
+  const auto& e = triangles[t];
+  return {nodes[e[0]], nodes[e[1]], nodes[e[2]]};
+}
+
+P2Mesh p2_mesh(const Mesh& p1) {
+  P2Mesh m;
+  m.nodes = p1.nodes;
+  m.num_vertices = p1.num_nodes();
+  // one midpoint per edge, shared by the two triangles of an interior edge
+  std::map<std::pair<int, int>, int> midpoint;
+  const auto node_between = [&](int a, int b) {
+    const std::pair<int, int> key = std::minmax(a, b);
+    const auto [it, added] = midpoint.try_emplace(key, m.num_nodes());
+    if (added) m.nodes.push_back(0.5 * (p1.nodes[a] + p1.nodes[b]));
+    return it->second;
+  };
+  for (const auto& t : p1.triangles)
+    m.triangles.push_back({t[0], t[1], t[2], node_between(t[0], t[1]), node_between(t[1], t[2]),
+                           node_between(t[2], t[0])});
+  // each side: its vertices in order, with the midpoint of each consecutive pair between them
+  for (int side = 0; side < 4; ++side) {
+    const std::vector<int>& v = p1.side_nodes[side];
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (k > 0) {
+        const auto it = midpoint.find(std::minmax(v[k - 1], v[k]));
+        if (it == midpoint.end())
+          throw std::logic_error("p2_mesh: side nodes " + std::to_string(v[k - 1]) + " and " + std::to_string(v[k]) +
+                                 " share no triangle edge");
+        m.side_nodes[side].push_back(it->second);
+      }
+      m.side_nodes[side].push_back(v[k]);
+    }
+  }
+  return m;
+}
+
+SparseMatrix assemble_p2_stiffness(const P2Mesh& mesh, const Material& material) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(mesh.triangles.size() * 144);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const P2ElementMatrix K = p2_element_stiffness(mesh.vertices(static_cast<int>(t)), material);
+    const auto& e = mesh.triangles[t];
+    for (int a = 0; a < 6; ++a)
+      for (int i = 0; i < 2; ++i)
+        for (int b = 0; b < 6; ++b)
+          for (int j = 0; j < 2; ++j) triplets.emplace_back(2 * e[a] + i, 2 * e[b] + j, K(2 * a + i, 2 * b + j));
+  }
+  SparseMatrix K(mesh.num_dofs(), mesh.num_dofs());
+  K.setFromTriplets(triplets.begin(), triplets.end());
   return K;
 }
 

@@ -8,7 +8,9 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <vector>
 
+#include "common/fem/mesh.hpp"
 #include "common/fem/p1_elasticity.hpp"
 #include "common/fem/quadrature.hpp"
 
@@ -30,5 +32,29 @@ constexpr int p2_stiffness_degree = 2;
 P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& vertices, const Material& material);
 P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& vertices, const Material& material,
                                      const TriangleRule& rule);
+
+}  // namespace mortar
+
+namespace mortar {
+
+// A P2 mesh: the triangles of a P1 mesh with a node added at the midpoint of every edge. The
+// vertices keep their P1 numbers, the midpoints follow them; each side's nodes, vertices and
+// midpoints, stay ordered along the side (so a trace on Gamma_c has 2N + 1 nodes).
+struct P2Mesh {
+  std::vector<Eigen::Vector2d> nodes;
+  std::vector<std::array<int, 6>> triangles;  // vertices 0-2, midpoints of 0-1, 1-2, 2-0
+  std::array<std::vector<int>, 4> side_nodes;
+  int num_vertices = 0;
+
+  const std::vector<int>& nodes_on(Side side) const { return side_nodes[static_cast<int>(side)]; }
+  int num_nodes() const { return static_cast<int>(nodes.size()); }
+  int num_dofs() const { return 2 * num_nodes(); }
+  std::array<Eigen::Vector2d, 3> vertices(int triangle) const;
+};
+
+P2Mesh p2_mesh(const Mesh& p1);
+
+// The global K of one body, assembled from the 12 x 12 element matrices by triplets.
+SparseMatrix assemble_p2_stiffness(const P2Mesh& mesh, const Material& material);
 
 }  // namespace mortar
