@@ -1,2 +1,0 @@
-// Nothing of its own: the target test_headers compiles the tests' precompiled header only
-// (CMakeLists.txt).
