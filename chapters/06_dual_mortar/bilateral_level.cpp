@@ -60,9 +60,7 @@ mortar::BilateralSolution solve_dual_mortar(const mortar::TwoBodies& bodies, con
 void add_function_error(const mortar::BilateralLevel& level, const mortar::ManufacturedContact& exact,
                         mortar::Row& row) {
   const mortar::BilateralSolution& s = level.solution;
-  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(s.gamma.space.dim());
-  for (std::size_t r = 0; r < s.constraints.row_source.size(); ++r) coefficients[s.constraints.row_source[r]] = s.lambda[r];
-  const mortar::BrokenCurve lambda_h = mortar::multiplier_function(s.gamma.space, s.gamma.nonmortar_trace, coefficients);
+  const mortar::BrokenCurve lambda_h = mortar::multiplier_function(s.gamma, s.constraints, s.lambda);
   const double error = mortar::l2_error(lambda_h, [&](double x) { return exact.pressure(x); });
   row.emplace_back("err_pressure_function", error / level.pressure_errors.norm_l2);
 }

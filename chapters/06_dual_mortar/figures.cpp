@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "common/interface/dual_basis.hpp"
@@ -12,19 +13,28 @@ namespace chapter06 {
 namespace {
 const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b"};
 
+// A broken curve as one series, element by element with a NaN after each so the line breaks
+// at the nodes and the jumps show; only the elements `keep` accepts.
+mortar::Series broken_series(const mortar::BrokenCurve& f, const std::string& title, const std::string& style,
+                             const std::function<bool(std::size_t)>& keep) {
+  mortar::Series s{title, {}, {}, "lines", style};
+  for (std::size_t e = 0; e + 1 < f.x.size(); ++e)
+    if (keep(e)) {
+      s.x.insert(s.x.end(), {f.x[e], f.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
+      s.y.insert(s.y.end(), {f.left[e], f.right[e], 0.0});
+    }
+  return s;
+}
+
 // psi_i of a space on a trace, drawn element by element with a break at each node so the
 // jumps of a discontinuous basis show as jumps (NaN breaks the line).
 mortar::Series basis_function(const mortar::MultiplierSpace& space, const mortar::InterfaceTrace& t, int i) {
   Eigen::VectorXd unit = Eigen::VectorXd::Zero(space.dim());
   unit[i] = 1;
   const mortar::BrokenCurve f = mortar::multiplier_function(space, t, unit);
-  mortar::Series s{"psi_" + std::to_string(i + 1), {}, {}, "lines",
-                   std::string("lw 2 lc rgb '") + colours[i % 7] + "'"};
-  for (int e = 0; e < t.num_elements(); ++e) {
-    if (f.left[e] == 0 && f.right[e] == 0) continue;
-    s.x.insert(s.x.end(), {t.x[e], t.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
-    s.y.insert(s.y.end(), {f.left[e], f.right[e], 0.0});
-  }
+  // drawn on its support only
+  mortar::Series s = broken_series(f, "psi_" + std::to_string(i + 1), std::string("lw 2 lc rgb '") + colours[i % 7] + "'",
+                                   [&](std::size_t e) { return f.left[e] != 0 || f.right[e] != 0; });
   return s;
 }
 
@@ -111,9 +121,7 @@ void plot_bases_against_time(const std::string& folder, const mortar::Convergenc
 void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel& level,
                         const mortar::ManufacturedContact& exact, bool run) {
   const mortar::BilateralSolution& s = level.solution;
-  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(s.gamma.space.dim());
-  for (std::size_t r = 0; r < s.constraints.row_source.size(); ++r) coefficients[s.constraints.row_source[r]] = s.lambda[r];
-  const mortar::BrokenCurve f = mortar::multiplier_function(s.gamma.space, s.gamma.nonmortar_trace, coefficients);
+  const mortar::BrokenCurve f = mortar::multiplier_function(s.gamma, s.constraints, s.lambda);
   const auto panel = [&](double a, double b, const std::string& title) {
     mortar::Figure fig;
     fig.title = title;
@@ -122,17 +130,13 @@ void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel&
     fig.key = "outside right top";
     fig.height = 420;
     mortar::Series p{"exact -sigma_N", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
-    mortar::Series function{"sum lambda_i psi_i (dual)", {}, {}, "lines", "lw 1.5 lc rgb '#ff7f0e'"};
+    const mortar::Series function = broken_series(f, "sum lambda_i psi_i (dual)", "lw 1.5 lc rgb '#ff7f0e'",
+                                                  [&](std::size_t e) { return f.x[e + 1] >= a && f.x[e] <= b; });
     mortar::Series nodes{"lambda_i at their nodes", {}, {}, "points", "pt 7 ps 0.9 lc rgb '#9467bd'"};
     for (int k = 0; k <= 400; ++k) {
       const double x = a + (b - a) * k / 400.0;
       p.x.push_back(x);
       p.y.push_back(exact.pressure(x));
-    }
-    for (std::size_t e = 0; e + 1 < f.x.size(); ++e) {
-      if (f.x[e + 1] < a || f.x[e] > b) continue;
-      function.x.insert(function.x.end(), {f.x[e], f.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
-      function.y.insert(function.y.end(), {f.left[e], f.right[e], 0.0});
     }
     for (std::size_t j = 0; j < level.pressure.x.size(); ++j)
       if (level.pressure.x[j] >= a && level.pressure.x[j] <= b) {
@@ -161,7 +165,8 @@ void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, boo
   fig.ylabel = "contact pressure [Pa]";
   mortar::Series standard{"standard: lambda_h (P1, >= 0)", {}, {}, "linespoints", "pt 6 ps 0.7 lw 2 lc rgb '#1f77b4'"};
   mortar::Series coefficients{"dual: lambda_i at their nodes", {}, {}, "points", "pt 7 ps 0.7 lc rgb '#9467bd'"};
-  mortar::Series function{"dual: sum lambda_i psi_i", {}, {}, "lines", "lw 1 lc rgb '#ff7f0e'"};
+  const mortar::Series function = broken_series(d.function, "dual: sum lambda_i psi_i", "lw 1 lc rgb '#ff7f0e'",
+                                                [&](std::size_t e) { return std::fabs(d.function.x[e] - centre) <= a; });
   for (std::size_t j = 0; j < s.pressure.x.size(); ++j)
     if (std::fabs(s.pressure.x[j] - centre) <= a) {
       standard.x.push_back(s.pressure.x[j]);
@@ -171,11 +176,6 @@ void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, boo
     if (std::fabs(d.pressure.x[j] - centre) <= a) {
       coefficients.x.push_back(d.pressure.x[j]);
       coefficients.y.push_back(d.pressure.value[j]);
-    }
-  for (std::size_t e = 0; e + 1 < d.function.x.size(); ++e)
-    if (std::fabs(d.function.x[e] - centre) <= a) {
-      function.x.insert(function.x.end(), {d.function.x[e], d.function.x[e + 1], std::numeric_limits<double>::quiet_NaN()});
-      function.y.insert(function.y.end(), {d.function.left[e], d.function.right[e], 0.0});
     }
   fig.series = {function, standard, coefficients};
   fig.key = "bottom center";

@@ -98,11 +98,7 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
   r.max_pressure = *std::max_element(r.pressure.value.begin(), r.pressure.value.end());
   r.zone = mortar::contact_zone(r.pressure);
   r.half_width = r.zone.half_width();
-  Eigen::VectorXd coefficients = Eigen::VectorXd::Zero(gamma.space.dim());
-  for (std::size_t k = 0; k < constraints.row_source.size(); ++k) {
-    coefficients[constraints.row_source[k]] = lambda[k];
-  }
-  r.function = mortar::multiplier_function(gamma.space, gamma.nonmortar_trace, coefficients);
+  r.function = mortar::multiplier_function(gamma, constraints, lambda);
   r.min_function = std::min(*std::min_element(r.function.left.begin(), r.function.left.end()),
                             *std::min_element(r.function.right.begin(), r.function.right.end()));
   return r;

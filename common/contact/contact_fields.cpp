@@ -9,6 +9,17 @@
 
 namespace mortar {
 
+Eigen::VectorXd multiplier_coefficients(const ContactInterface& g, const Constraints& c,
+                                        const Eigen::VectorXd& lambda) {
+  Eigen::VectorXd full = Eigen::VectorXd::Zero(g.space.dim());
+  for (std::size_t r = 0; r < c.row_source.size(); ++r) full[c.row_source[r]] = lambda[r];
+  return full;
+}
+
+BrokenCurve multiplier_function(const ContactInterface& g, const Constraints& c, const Eigen::VectorXd& lambda) {
+  return multiplier_function(g.space, g.nonmortar_trace, multiplier_coefficients(g, c, lambda));
+}
+
 InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
                                 const Eigen::VectorXd& lambda) {
   const ProfilePhase phase("post-processing");
@@ -16,9 +27,7 @@ InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
   InterfaceCurve p{t.x, std::vector<double>(t.x.size(), 0.0)};
   if (c.matching == Matching::integral) {
     // lambda_h = sum_i lambda_i psi_i = sum_j (C^T lambda)_j phi_j
-    Eigen::VectorXd full = Eigen::VectorXd::Zero(g.space.dim());
-    for (std::size_t r = 0; r < c.row_source.size(); ++r) full[c.row_source[r]] = lambda[r];
-    const Eigen::VectorXd nodal = g.space.C.transpose() * full;
+    const Eigen::VectorXd nodal = g.space.C.transpose() * multiplier_coefficients(g, c, lambda);
     for (int j = 0; j < t.num_nodes(); ++j) p.value[j] = nodal[j];
   } else {
     for (std::size_t r = 0; r < c.row_source.size(); ++r) {

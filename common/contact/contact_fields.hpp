@@ -12,6 +12,7 @@
 
 #include "common/contact/constraints.hpp"
 #include "common/contact/two_bodies.hpp"
+#include "common/interface/dual_basis.hpp"
 
 namespace mortar {
 
@@ -19,6 +20,14 @@ namespace mortar {
 struct InterfaceCurve {
   std::vector<double> x, value;
 };
+
+// The coefficient of every psi_i of the space, from the multipliers of the kept rows (zero on a
+// row dropped by constraint_rows).
+Eigen::VectorXd multiplier_coefficients(const ContactInterface& gamma, const Constraints& c,
+                                        const Eigen::VectorXd& lambda);
+// lambda_h = sum_i lambda_i psi_i as the function it is, element by element (integral matching;
+// for the dual basis it jumps at the nodes).
+BrokenCurve multiplier_function(const ContactInterface& gamma, const Constraints& c, const Eigen::VectorXd& lambda);
 
 // Nodal pressure on the non-mortar trace.
 InterfaceCurve contact_pressure(const ContactInterface& gamma, const Constraints& c,
