@@ -105,9 +105,10 @@ TEST(P2Mesh, adds_one_midpoint_per_edge_and_keeps_the_sides_in_order) {
   spec.nx = 4;
   spec.ny = 3;
   const Mesh p1 = rectangle_mesh(spec);
-  const P2Mesh m = p2_mesh(p1);
+  const Mesh m = p2_mesh(p1);
   const int edges = 4 * 4 + 3 * 5 + 4 * 3;  // horizontal, vertical, diagonal
-  EXPECT_EQ(m.num_vertices, 20);
+  EXPECT_EQ(m.degree(), 2);
+  EXPECT_EQ(p1.degree(), 1);
   EXPECT_EQ(m.num_nodes(), 20 + edges);
   EXPECT_EQ(m.triangles.size(), p1.triangles.size());
   const std::vector<int>& bottom = m.nodes_on(Side::bottom);
@@ -118,9 +119,12 @@ TEST(P2Mesh, adds_one_midpoint_per_edge_and_keeps_the_sides_in_order) {
   }
   EXPECT_EQ(m.nodes_on(Side::left).size(), 7u);
   // every midpoint lies halfway along its edge
-  for (const auto& t : m.triangles)
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
     for (int k = 0; k < 3; ++k)
-      EXPECT_LT((m.nodes[t[3 + k]] - 0.5 * (m.nodes[t[k]] + m.nodes[t[(k + 1) % 3]])).norm(), 1e-15);
+      EXPECT_LT((m.nodes[m.edge_nodes[t][k]] - 0.5 * (m.nodes[m.triangles[t][k]] + m.nodes[m.triangles[t][(k + 1) % 3]])).norm(), 1e-15);
+  // the vertices keep their P1 numbers, the midpoints come after them
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k) EXPECT_GE(m.edge_nodes[t][k], p1.num_nodes());
 }
 
 // a(u, v) = v^T K u for quadratic u and v over a jittered rectangle: the assembled matrix is
@@ -131,9 +135,9 @@ TEST(P2Mesh, assembly_is_exact_for_quadratic_fields) {
   spec.nx = 5;
   spec.ny = 4;
   spec.jitter = 0.3;
-  const P2Mesh m = p2_mesh(rectangle_mesh(spec));
+  const Mesh m = p2_mesh(rectangle_mesh(spec));
   const Material material(1.7, 0.3);
-  const SparseMatrix K = assemble_p2_stiffness(m, material);
+  const SparseMatrix K = assemble_stiffness(m, material);
   struct Quadratic {
     Eigen::Matrix<double, 2, 6> c;  // u_i = c(i, .) . (1, x, y, x^2, xy, y^2)
     Eigen::Vector2d at(const Eigen::Vector2d& p) const {
@@ -147,7 +151,7 @@ TEST(P2Mesh, assembly_is_exact_for_quadratic_fields) {
       dy << 0, 0, 1, 0, p.x(), 2 * p.y();
       return {c.row(0).dot(dx), c.row(1).dot(dy), c.row(0).dot(dy) + c.row(1).dot(dx)};
     }
-    Eigen::VectorXd nodal(const P2Mesh& mesh) const {
+    Eigen::VectorXd nodal(const Mesh& mesh) const {
       Eigen::VectorXd v(mesh.num_dofs());
       for (int a = 0; a < mesh.num_nodes(); ++a) v.segment<2>(2 * a) = at(mesh.nodes[a]);
       return v;

@@ -32,10 +32,18 @@ struct RectangleSpec {
   unsigned seed = 1;  // jitter is pseudo-random but reproducible
 };
 
+// A P1 mesh, or a P2 one (p2_mesh, common/fem/p2_elasticity.hpp): then every edge also has a
+// node at its midpoint, `nodes` holds the vertices first and the midpoints after them,
+// `edge_nodes[t]` the midpoints of triangle t's edges 0-1, 1-2, 2-0, and each side lists its
+// vertices and midpoints in order along it. `triangles` are the vertex triangles either way,
+// so the geometry (areas, h, pictures) reads the same.
 struct Mesh {
   std::vector<Eigen::Vector2d> nodes;
   std::vector<std::array<int, 3>> triangles;
   std::array<std::vector<int>, 4> side_nodes;  // indexed by Side, ordered by increasing x or y
+  std::vector<std::array<int, 3>> edge_nodes;  // P2 only: empty for a P1 mesh
+
+  int degree() const { return edge_nodes.empty() ? 1 : 2; }
 
   const std::vector<int>& nodes_on(Side side) const { return side_nodes[static_cast<int>(side)]; }
   int num_nodes() const { return static_cast<int>(nodes.size()); }

@@ -1,5 +1,7 @@
 #include "common/fem/p1_elasticity.hpp"
 
+#include "common/fem/p2_elasticity.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -58,6 +60,7 @@ ElementMatrix element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const M
 
 void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
                             std::vector<Eigen::Triplet<double>>& triplets) {
+  if (mesh.degree() == 2) return add_p2_stiffness_triplets(mesh, material, offset, triplets);
   triplets.reserve(triplets.size() + 36 * mesh.triangles.size());
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     const ElementMatrix Ke = element_stiffness(triangle_vertices(mesh, t), material);

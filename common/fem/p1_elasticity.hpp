@@ -41,7 +41,8 @@ StrainMatrix strain_matrix(const std::array<Eigen::Vector2d, 3>& x);
 // K_T = area * B^T C B, the 6 x 6 stiffness of one triangle.
 ElementMatrix element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const Material& material);
 
-// Global stiffness K of one body, assembled from element matrices by triplets.
+// Global stiffness K of one body, assembled from element matrices by triplets (P2 elements on
+// a P2 mesh, common/fem/p2_elasticity.hpp).
 SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material);
 // The triplets of K, with every dof index shifted by `offset` (several bodies, one matrix).
 void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,

@@ -51,15 +51,17 @@ P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& x, co
 
 namespace mortar {
 
-std::array<Eigen::Vector2d, 3> P2Mesh::vertices(int t) const {
-  const auto& e = triangles[t];
-  return {nodes[e[0]], nodes[e[1]], nodes[e[2]]};
+std::array<int, 6> p2_element_nodes(const Mesh& mesh, int t) {
+  const auto& v = mesh.triangles[t];
+  const auto& m = mesh.edge_nodes[t];
+  return {v[0], v[1], v[2], m[0], m[1], m[2]};
 }
 
-P2Mesh p2_mesh(const Mesh& p1) {
-  P2Mesh m;
+Mesh p2_mesh(const Mesh& p1) {
+  if (p1.degree() != 1) throw std::invalid_argument("p2_mesh: the mesh is already P2");
+  Mesh m;
   m.nodes = p1.nodes;
-  m.num_vertices = p1.num_nodes();
+  m.triangles = p1.triangles;
   // one midpoint per edge, shared by the two triangles of an interior edge
   std::map<std::pair<int, int>, int> midpoint;
   const auto node_between = [&](int a, int b) {
@@ -69,8 +71,7 @@ P2Mesh p2_mesh(const Mesh& p1) {
     return it->second;
   };
   for (const auto& t : p1.triangles)
-    m.triangles.push_back({t[0], t[1], t[2], node_between(t[0], t[1]), node_between(t[1], t[2]),
-                           node_between(t[2], t[0])});
+    m.edge_nodes.push_back({node_between(t[0], t[1]), node_between(t[1], t[2]), node_between(t[2], t[0])});
   // each side: its vertices in order, with the midpoint of each consecutive pair between them
   for (int side = 0; side < 4; ++side) {
     const std::vector<int>& v = p1.side_nodes[side];
@@ -88,20 +89,18 @@ P2Mesh p2_mesh(const Mesh& p1) {
   return m;
 }
 
-SparseMatrix assemble_p2_stiffness(const P2Mesh& mesh, const Material& material) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(mesh.triangles.size() * 144);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const P2ElementMatrix K = p2_element_stiffness(mesh.vertices(static_cast<int>(t)), material);
-    const auto& e = mesh.triangles[t];
+void add_p2_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
+                               std::vector<Eigen::Triplet<double>>& triplets) {
+  triplets.reserve(triplets.size() + mesh.triangles.size() * 144);
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const P2ElementMatrix K = p2_element_stiffness(triangle_vertices(mesh, t), material);
+    const std::array<int, 6> e = p2_element_nodes(mesh, t);
     for (int a = 0; a < 6; ++a)
       for (int i = 0; i < 2; ++i)
         for (int b = 0; b < 6; ++b)
-          for (int j = 0; j < 2; ++j) triplets.emplace_back(2 * e[a] + i, 2 * e[b] + j, K(2 * a + i, 2 * b + j));
+          for (int j = 0; j < 2; ++j)
+            triplets.emplace_back(offset + 2 * e[a] + i, offset + 2 * e[b] + j, K(2 * a + i, 2 * b + j));
   }
-  SparseMatrix K(mesh.num_dofs(), mesh.num_dofs());
-  K.setFromTriplets(triplets.begin(), triplets.end());
-  return K;
 }
 
 }  // namespace mortar

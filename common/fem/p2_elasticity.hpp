@@ -37,24 +37,17 @@ P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& verti
 
 namespace mortar {
 
-// A P2 mesh: the triangles of a P1 mesh with a node added at the midpoint of every edge. The
+// The P2 mesh of a P1 mesh (mesh.hpp): a node added at the midpoint of every edge. The
 // vertices keep their P1 numbers, the midpoints follow them; each side's nodes, vertices and
 // midpoints, stay ordered along the side (so a trace on Gamma_c has 2N + 1 nodes).
-struct P2Mesh {
-  std::vector<Eigen::Vector2d> nodes;
-  std::vector<std::array<int, 6>> triangles;  // vertices 0-2, midpoints of 0-1, 1-2, 2-0
-  std::array<std::vector<int>, 4> side_nodes;
-  int num_vertices = 0;
+Mesh p2_mesh(const Mesh& p1);
 
-  const std::vector<int>& nodes_on(Side side) const { return side_nodes[static_cast<int>(side)]; }
-  int num_nodes() const { return static_cast<int>(nodes.size()); }
-  int num_dofs() const { return 2 * num_nodes(); }
-  std::array<Eigen::Vector2d, 3> vertices(int triangle) const;
-};
+// The six nodes of triangle t of a P2 mesh: vertices 0-2, then the midpoints of 0-1, 1-2, 2-0.
+std::array<int, 6> p2_element_nodes(const Mesh& mesh, int t);
 
-P2Mesh p2_mesh(const Mesh& p1);
-
-// The global K of one body, assembled from the 12 x 12 element matrices by triplets.
-SparseMatrix assemble_p2_stiffness(const P2Mesh& mesh, const Material& material);
+// The triplets of the P2 K of one body (12 x 12 element matrices), every dof shifted by
+// offset; add_stiffness_triplets (p1_elasticity.hpp) calls it for a P2 mesh.
+void add_p2_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
+                               std::vector<Eigen::Triplet<double>>& triplets);
 
 }  // namespace mortar
