@@ -4,6 +4,7 @@
 
 #include "common/fem/quadrature.hpp"
 #include "common/interface/dual_basis.hpp"
+#include "common/interface/lagrange_1d.hpp"
 #include "common/study/profile.hpp"
 
 namespace mortar {
@@ -34,7 +35,7 @@ namespace {
 ContactInterface interface_with(const TwoBodies& bodies, int nonmortar, double merge_tol, bool dual) {
   ContactInterface g = contact_traces(bodies, nonmortar);
   g.grid = merge_traces(g.nonmortar_trace, g.mortar_trace, merge_tol);
-  g.space = dual ? dual_end_modified_p1(g.nonmortar_trace) : end_modified_p1(g.nonmortar_trace);
+  g.space = dual ? dual_end_modified_p1(g.nonmortar_trace) : end_modified_space(g.nonmortar_trace);
   g.matrices = mortar_matrices(g.nonmortar_trace, g.mortar_trace, g.grid, g.space);
   return g;
 }
@@ -52,23 +53,24 @@ using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 MatchingRows pointwise_matching_rows(const ContactInterface& g) {
   const ProfilePhase phase("interface and constraints");
-  const int n = g.nonmortar_trace.num_nodes();
+  const int n = g.nonmortar_trace.num_dofs();
   std::vector<Eigen::Triplet<double>> nm, m;
   MatchingRows c;
   c.matching = Matching::pointwise;
+  const auto& t = g.mortar_trace;
   for (int a = 0; a < n; ++a) {
     nm.emplace_back(a, a, 1.0);
-    // value of the mortar trace at x_a: its two hats on the element containing x_a
-    const double x = g.nonmortar_trace.x[a];
-    const auto& t = g.mortar_trace;
+    // value of the mortar trace at x_a: its q + 1 functions on the element containing x_a
+    // (for P2 the non-mortar midpoints are matched too: every node of xi^1)
+    const double x = g.nonmortar_trace.node_x(a);
     const int e = t.element_containing(x);
     const double s = (x - t.x[e]) / (t.x[e + 1] - t.x[e]);
-    m.emplace_back(a, e, 1 - s);
-    m.emplace_back(a, e + 1, s);
+    const std::array<double, 3> phi = lagrange_1d(t.degree, s);
+    for (int k = 0; k <= t.degree; ++k) m.emplace_back(a, t.degree * e + k, phi[k]);
     c.row_node.push_back(a);
   }
   c.nonmortar.resize(n, n);
-  c.mortar.resize(n, g.mortar_trace.num_nodes());
+  c.mortar.resize(n, t.num_dofs());
   c.nonmortar.setFromTriplets(nm.begin(), nm.end());
   c.mortar.setFromTriplets(m.begin(), m.end());
   return c;
@@ -132,7 +134,7 @@ Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,
   const InterfaceTrace& t = gamma.nonmortar_trace;
   Eigen::VectorXd G(static_cast<Eigen::Index>(c.row_source.size()));
   if (c.matching == Matching::pointwise) {
-    for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g(t.x[c.row_source[r]]);
+    for (std::size_t r = 0; r < c.row_source.size(); ++r) G[r] = g(t.node_x(c.row_source[r]));
     return G;
   }
   const Eigen::VectorXd g_psi = integrals_against_basis(gamma.space, t, g);

@@ -4,10 +4,18 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/interface/lagrange_1d.hpp"
 #include "common/study/profile.hpp"
 #include "common/fem/quadrature.hpp"
 
 namespace mortar {
+
+double InterfaceCurve::at(int piece, double s) const {
+  const std::array<double, 3> phi = lagrange_1d(degree, s);
+  double v = 0;
+  for (int l = 0; l <= degree; ++l) v += phi[l] * value[degree * piece + l];
+  return v;
+}
 
 Eigen::VectorXd multiplier_coefficients(const ContactInterface& g, const Constraints& c,
                                         const Eigen::VectorXd& lambda) {
@@ -24,17 +32,17 @@ InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
                                 const Eigen::VectorXd& lambda) {
   const ProfilePhase phase("post-processing");
   const InterfaceTrace& t = g.nonmortar_trace;
-  InterfaceCurve p{t.x, std::vector<double>(t.x.size(), 0.0)};
+  InterfaceCurve p{{}, std::vector<double>(static_cast<std::size_t>(t.num_dofs()), 0.0), t.degree};
+  for (int j = 0; j < t.num_dofs(); ++j) p.x.push_back(t.node_x(j));
   if (c.matching == Matching::integral) {
     // lambda_h = sum_i lambda_i psi_i = sum_j (C^T lambda)_j phi_j
     const Eigen::VectorXd nodal = g.space.C.transpose() * multiplier_coefficients(g, c, lambda);
-    for (int j = 0; j < t.num_nodes(); ++j) p.value[j] = nodal[j];
+    for (int j = 0; j < t.num_dofs(); ++j) p.value[j] = nodal[j];
   } else {
+    const std::vector<double> weight = t.node_integrals();
     for (std::size_t r = 0; r < c.row_source.size(); ++r) {
       const int a = c.row_source[r];
-      const double left = a > 0 ? t.x[a] - t.x[a - 1] : 0.0;
-      const double right = a + 1 < t.num_nodes() ? t.x[a + 1] - t.x[a] : 0.0;
-      p.value[a] = lambda[r] / (0.5 * (left + right));
+      p.value[a] = lambda[r] / weight[a];
     }
   }
   return p;
@@ -51,12 +59,18 @@ InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& g,
   };
   const std::vector<double> nm = uy(g.nonmortar, g.nonmortar_trace), m = uy(g.mortar(), g.mortar_trace);
   InterfaceCurve jump;
-  for (double x : g.grid.breakpoints) {
+  jump.degree = std::max(g.nonmortar_trace.degree, g.mortar_trace.degree);
+  const auto add = [&](double x) {
     const double u_nm = g.nonmortar_trace.evaluate(nm, x), u_m = g.mortar_trace.evaluate(m, x);
     // [u.n] = u1.n1 + u2.n2 = u2_y - u1_y whichever side is the non-mortar one
     const double u1 = g.nonmortar == 0 ? u_nm : u_m, u2 = g.nonmortar == 0 ? u_m : u_nm;
     jump.x.push_back(x);
     jump.value.push_back(u2 - u1);
+  };
+  const std::vector<double>& b = g.grid.breakpoints;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (k > 0 && jump.degree == 2) add(0.5 * (b[k - 1] + b[k]));
+    add(b[k]);
   }
   return jump;
 }
@@ -79,11 +93,11 @@ double total_contact_force(const ContactInterface& g, const Constraints& c,
 double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact) {
   const SegmentRule g = gauss_legendre(4);
   std::vector<double> difference, weight;
-  for (std::size_t e = 0; e + 1 < curve.x.size(); ++e) {
-    const double a = curve.x[e], b = curve.x[e + 1];
+  for (int e = 0; e < curve.pieces(); ++e) {
+    const double a = curve.x[curve.degree * e], b = curve.x[curve.degree * (e + 1)];
     for (std::size_t q = 0; q < g.points.size(); ++q) {
       const double s = g.points[q];
-      const double value = (1 - s) * curve.value[e] + s * curve.value[e + 1];
+      const double value = curve.at(e, s);
       difference.push_back(value - exact(a + s * (b - a)));
       weight.push_back(g.weights[q] * (b - a));
     }
@@ -100,7 +114,7 @@ double l2_error(const InterfaceCurve& curve, const std::function<double(double)>
 }
 
 double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& f) {
-  InterfaceCurve zero{curve.x, std::vector<double>(curve.x.size(), 0.0)};
+  InterfaceCurve zero{curve.x, std::vector<double>(curve.x.size(), 0.0), curve.degree};
   return l2_error(zero, f);
 }
 

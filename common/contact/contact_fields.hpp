@@ -16,9 +16,15 @@
 
 namespace mortar {
 
-// A function on Gamma_c that is P1 between the points x (values at the points).
+// A function on Gamma_c given by its values at the points x: P1 between consecutive points, or
+// (degree 2, the traces of P2 bodies) on each [x_{2e}, x_{2e+2}] the quadratic through the
+// three points 2e, 2e + 1, 2e + 2, the middle one at the midpoint. Pictures draw the points.
 struct InterfaceCurve {
   std::vector<double> x, value;
+  int degree = 1;
+  int pieces() const { return (static_cast<int>(x.size()) - 1) / degree; }
+  // The value on piece e at the local coordinate s in [0, 1].
+  double at(int piece, double s) const;
 };
 
 // The coefficient of every psi_i of the space, from the multipliers of the kept rows (zero on a
@@ -29,12 +35,15 @@ Eigen::VectorXd multiplier_coefficients(const ContactInterface& gamma, const Con
 // for the dual basis it jumps at the nodes).
 BrokenCurve multiplier_function(const ContactInterface& gamma, const Constraints& c, const Eigen::VectorXd& lambda);
 
-// Nodal pressure on the non-mortar trace.
+// Nodal pressure on the non-mortar trace, at its nodes (of degree q: for P2 the end points and
+// midpoints of its elements). Pointwise matching: lambda_a / int phi_a, the nodal force spread
+// over the trace function of its node (half the two element lengths for P1).
 InterfaceCurve contact_pressure(const ContactInterface& gamma, const Constraints& c,
                                 const Eigen::VectorXd& lambda);
 
-// [u_h.n] = u2_y - u1_y, P1 on the merged grid (both traces are P1 there): exact values at
-// the merged breakpoints.
+// [u_h.n] = u2_y - u1_y, of the traces' degree q on each merged segment (both traces are one
+// polynomial there): exact values at the merged breakpoints (and, for q = 2, the segments'
+// midpoints).
 InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& gamma,
                            const Eigen::VectorXd& u);
 
@@ -43,7 +52,8 @@ InterfaceCurve normal_jump(const TwoBodies& bodies, const ContactInterface& gamm
 double total_contact_force(const ContactInterface& gamma, const Constraints& c,
                            const Eigen::VectorXd& lambda);
 
-// (int_{Gamma_c} (curve - exact)^2)^{1/2}, by 4-point Gauss on each piece of the curve.
+// (int_{Gamma_c} (curve - exact)^2)^{1/2}, by 4-point Gauss on each piece of the curve (exact
+// for a polynomial exact function of degree 3 or less).
 double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact);
 double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& exact_for_grid);
 

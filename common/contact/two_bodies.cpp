@@ -1,6 +1,10 @@
 #include "common/contact/two_bodies.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "common/fem/p2_elasticity.hpp"
 
 #include "common/study/profile.hpp"
 
@@ -39,6 +43,8 @@ TwoBodies make_two_bodies(const TwoBodyGeometry& g, const Material& body1, const
   upper.jitter = lower.jitter = g.jitter;
   upper.seed = 1;
   lower.seed = 2;  // independent jitter: the traces on Gamma_c differ
+  if (g.degree == 2) return TwoBodies({p2_mesh(rectangle_mesh(upper)), body1}, {p2_mesh(rectangle_mesh(lower)), body2});
+  if (g.degree != 1) throw std::invalid_argument("make_two_bodies: degree 1 or 2, got " + std::to_string(g.degree));
   return TwoBodies({rectangle_mesh(upper), body1}, {rectangle_mesh(lower), body2});
 }
 

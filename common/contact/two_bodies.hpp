@@ -22,6 +22,7 @@ struct TwoBodyGeometry {
   double L = 1, H1 = 0.5, H2 = 0.5;
   int n1 = 12, m1 = 6, n2 = 8, m2 = 4;
   double jitter = 0;
+  int degree = 1;  // q of both bodies: P1, or P2 (chapter 7) on the same triangles
 };
 
 class TwoBodies {

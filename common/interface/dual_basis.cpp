@@ -59,6 +59,9 @@ double d_offdiagonal_max(const MultiplierSpace& space, const Eigen::SparseMatrix
 
 BrokenCurve multiplier_function(const MultiplierSpace& space, const InterfaceTrace& t,
                                 const Eigen::VectorXd& coefficients) {
+  if (space.degree != 1)
+    throw std::invalid_argument("multiplier_function: a broken curve is P1, the space is P" +
+                                std::to_string(space.degree));
   const Eigen::VectorXd local = space.element_coefficients().transpose() * coefficients;
   BrokenCurve curve{t.x, {}, {}};
   for (int e = 0; e < t.num_elements(); ++e) {

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/interface/lagrange_1d.hpp"
+
 namespace mortar {
 
 namespace {
@@ -35,34 +37,62 @@ int InterfaceTrace::element_containing(double point) const {
 double InterfaceTrace::evaluate(const std::vector<double>& values, double point) const {
   const int e = element_containing(point);
   const double t = (point - x[e]) / (x[e + 1] - x[e]);
-  return (1 - t) * values[e] + t * values[e + 1];
+  if (degree == 1) return (1 - t) * values[e] + t * values[e + 1];
+  const std::array<double, 3> phi = lagrange_1d(degree, t);
+  return phi[0] * values[2 * e] + phi[1] * values[2 * e + 1] + phi[2] * values[2 * e + 2];
 }
 
 Eigen::SparseMatrix<double> InterfaceTrace::mass_matrix() const {
   std::vector<Eigen::Triplet<double>> entries;
   for (int e = 0; e < num_elements(); ++e) {
     const double h = x[e + 1] - x[e];
-    entries.emplace_back(e, e, h / 3);
-    entries.emplace_back(e + 1, e + 1, h / 3);
-    entries.emplace_back(e, e + 1, h / 6);
-    entries.emplace_back(e + 1, e, h / 6);
+    if (degree == 1) {
+      entries.emplace_back(e, e, h / 3);
+      entries.emplace_back(e + 1, e + 1, h / 3);
+      entries.emplace_back(e, e + 1, h / 6);
+      entries.emplace_back(e + 1, e, h / 6);
+      continue;
+    }
+    static const double local[3][3] = {{4, 2, -1}, {2, 16, 2}, {-1, 2, 4}};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) entries.emplace_back(2 * e + a, 2 * e + b, h * local[a][b] / 30);
   }
-  Eigen::SparseMatrix<double> mass(num_nodes(), num_nodes());
+  Eigen::SparseMatrix<double> mass(num_dofs(), num_dofs());
   mass.setFromTriplets(entries.begin(), entries.end());
   return mass;
 }
 
+std::vector<double> InterfaceTrace::node_integrals() const {
+  std::vector<double> w(static_cast<std::size_t>(num_dofs()), 0.0);
+  for (int e = 0; e < num_elements(); ++e) {
+    const double h = x[e + 1] - x[e];
+    if (degree == 1) {
+      w[e] += 0.5 * h;
+      w[e + 1] += 0.5 * h;
+    } else {
+      w[2 * e] += h / 6;
+      w[2 * e + 1] += 2 * h / 3;
+      w[2 * e + 2] += h / 6;
+    }
+  }
+  return w;
+}
+
 InterfaceTrace trace_on_side(const Mesh& mesh, Side side) {
   InterfaceTrace t;
-  for (int a : mesh.nodes_on(side)) {
-    t.x.push_back(mesh.nodes[a].x());
-    t.nodes.push_back(a);
+  t.degree = mesh.degree();
+  const std::vector<int>& on_side = mesh.nodes_on(side);
+  for (std::size_t k = 0; k < on_side.size(); ++k) {
+    // a P2 side lists end point, midpoint, end point, ...: the elements end at every other node
+    if (k % t.degree == 0) t.x.push_back(mesh.nodes[on_side[k]].x());
+    t.nodes.push_back(on_side[k]);
   }
   check_increasing(t);
   return t;
 }
 
-InterfaceTrace uniform_trace(double L, int n, double jitter, unsigned seed) {
+InterfaceTrace uniform_trace(double L, int n, double jitter, unsigned seed, int degree) {
+  check_trace_degree(degree);
   if (!(L > 0) || n < 1)
     throw std::invalid_argument("uniform_trace: need L > 0 and n >= 1, got L = " +
                                 std::to_string(L) + ", n = " + std::to_string(n));
@@ -76,8 +106,9 @@ InterfaceTrace uniform_trace(double L, int n, double jitter, unsigned seed) {
   for (int i = 0; i <= n; ++i) {
     const double move = (i > 0 && i < n && jitter > 0) ? shift(rng) * h : 0.0;
     t.x.push_back(i * h + move);
-    t.nodes.push_back(-1);
   }
+  t.degree = degree;
+  t.nodes.assign(static_cast<std::size_t>(t.num_dofs()), -1);
   check_increasing(t);
   return t;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/fem/quadrature.hpp"
+#include "common/interface/lagrange_1d.hpp"
 
 namespace mortar {
 
@@ -35,29 +36,31 @@ void composite_rule(double a, double b, std::vector<double> cuts, const Add& add
   }
 }
 
-// p_h between its points, P1; its breakpoints strictly inside (a, b).
+// p_h between its points, P1 or P2 (contact_fields.hpp); its piece ends strictly inside (a, b).
 struct CurveReader {
   const InterfaceCurve& curve;
+  std::vector<double> ends;  // the points where a piece ends: all of them for P1, every other for P2
 
+  explicit CurveReader(const InterfaceCurve& c) : curve(c) {
+    for (std::size_t k = 0; k < c.x.size(); k += static_cast<std::size_t>(c.degree)) ends.push_back(c.x[k]);
+  }
   double operator()(double x) const {
-    const auto& xs = curve.x;
-    const auto it = std::upper_bound(xs.begin(), xs.end(), x);
-    const std::size_t e = std::clamp<std::size_t>(static_cast<std::size_t>(it - xs.begin()), 1, xs.size() - 1) - 1;
-    const double t = (x - xs[e]) / (xs[e + 1] - xs[e]);
-    return (1 - t) * curve.value[e] + t * curve.value[e + 1];
+    const auto it = std::upper_bound(ends.begin(), ends.end(), x);
+    const std::size_t e = std::clamp<std::size_t>(static_cast<std::size_t>(it - ends.begin()), 1, ends.size() - 1) - 1;
+    return curve.at(static_cast<int>(e), (x - ends[e]) / (ends[e + 1] - ends[e]));
   }
   std::vector<double> breakpoints_inside(double a, double b) const {
-    const auto first = std::upper_bound(curve.x.begin(), curve.x.end(), a);
-    const auto last = std::lower_bound(curve.x.begin(), curve.x.end(), b);
+    const auto first = std::upper_bound(ends.begin(), ends.end(), a);
+    const auto last = std::lower_bound(ends.begin(), ends.end(), b);
     return first < last ? std::vector<double>(first, last) : std::vector<double>{};
   }
 };
 
 void check_curve(const InterfaceCurve& c, const InterfaceTrace& t) {
-  if (c.x.size() < 2 || c.x.size() != c.value.size())
+  if (c.x.size() < 2 || c.x.size() != c.value.size() || (c.x.size() - 1) % c.degree != 0)
     throw std::invalid_argument("pressure_errors: p_h needs at least 2 points and one value per point, got " +
                                 std::to_string(c.x.size()) + " points and " + std::to_string(c.value.size()) +
-                                " values");
+                                " values (degree " + std::to_string(c.degree) + ")");
   for (std::size_t i = 0; i + 1 < c.x.size(); ++i)
     if (!(c.x[i + 1] > c.x[i]))
       throw std::invalid_argument("pressure_errors: the points of p_h must increase, x[" + std::to_string(i + 1) +
@@ -123,17 +126,17 @@ SplitNorms split_norms(const InterfaceTrace& t, const ElementSquares& error) {
 InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p) {
   const InterfaceTrace& t = gamma.nonmortar_trace;
   const auto& C = gamma.space.C;
-  if (C.cols() != t.num_nodes())
+  if (C.cols() != t.num_dofs())
     throw std::invalid_argument("l2_projection: M_h has " + std::to_string(C.cols()) + " trace nodes, the trace " +
-                                std::to_string(t.num_nodes()));
-  // the load (int p phi_j)_j, against the P1 mass matrix of the trace
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(t.num_nodes());
+                                std::to_string(t.num_dofs()));
+  // the load (int p phi_j)_j, against the mass matrix of the trace's own degree
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(t.num_dofs());
+  const int q = t.degree;
   for (int e = 0; e < t.num_elements(); ++e) {
     const double h = t.x[e + 1] - t.x[e];
     composite_rule(t.x[e], t.x[e + 1], {}, [&](double x, double w) {
-      const double s = (x - t.x[e]) / h;
-      load[e] += w * (1 - s) * p(x);
-      load[e + 1] += w * s * p(x);
+      const std::array<double, 3> phi = lagrange_1d(q, (x - t.x[e]) / h);
+      for (int l = 0; l <= q; ++l) load[q * e + l] += w * phi[l] * p(x);
     });
   }
   const Eigen::SparseMatrix<double> M_phi = t.mass_matrix();
@@ -145,7 +148,9 @@ InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<
                              " multipliers) could not be factored");
   const Eigen::VectorXd coefficients = factor.solve(Eigen::VectorXd(C * load));
   const Eigen::VectorXd nodal = C.transpose() * coefficients;
-  return {t.x, std::vector<double>(nodal.data(), nodal.data() + nodal.size())};
+  InterfaceCurve out{{}, std::vector<double>(nodal.data(), nodal.data() + nodal.size()), q};
+  for (int j = 0; j < t.num_dofs(); ++j) out.x.push_back(t.node_x(j));
+  return out;
 }
 
 PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCurve& p_h,
@@ -154,7 +159,7 @@ PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCur
   check_curve(p_h, t);
   const SplitNorms computed = split_norms(t, element_squares(t, p_h, p));
   const SplitNorms best = split_norms(t, element_squares(t, l2_projection(gamma, p), p));
-  const InterfaceCurve zero{t.x, std::vector<double>(t.x.size(), 0.0)};
+  const InterfaceCurve zero{t.x, std::vector<double>(t.x.size(), 0.0), 1};
   const SplitNorms size = split_norms(t, element_squares(t, zero, p));
 
   PressureErrors r;

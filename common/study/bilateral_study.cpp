@@ -23,7 +23,8 @@ constexpr double max_cells_per_side = 1 << 16;
 // heights or aspects cannot wrap an int before they are checked.
 struct FinestSize {
   double n1, m1, n2, m2;
-  double dofs() const { return 2 * (n1 + 1) * (m1 + 1) + 2 * (n2 + 1) * (m2 + 1); }
+  double q = 1;  // degree: q n + 1 nodes along a side
+  double dofs() const { return 2 * (q * n1 + 1) * (q * m1 + 1) + 2 * (q * n2 + 1) * (q * m2 + 1); }
   double largest() const { return std::max({n1, m1, n2, m2}); }
 };
 
@@ -33,6 +34,7 @@ FinestSize finest_size(const BilateralStudyOptions& o) {
   s.n2 = std::max(2.0, std::round(s.n1 / o.h_ratio));
   s.m1 = std::max(1.0, std::round(o.aspect * s.n1 * o.H1 / o.L));
   s.m2 = std::max(1.0, std::round(o.aspect * s.n2 * o.H2 / o.L));
+  s.q = o.degree;
   return s;
 }
 }  // namespace
@@ -125,6 +127,7 @@ TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect
   g.H1 = o.H1;
   g.H2 = o.H2;
   g.jitter = o.jitter;
+  g.degree = o.degree;
   g.n1 = n1;
   g.n2 = std::max(2, static_cast<int>(std::lround(g.n1 / o.h_ratio)));
   g.m1 = std::max(1, static_cast<int>(std::lround(aspect * g.n1 * o.H1 / o.L)));
@@ -217,6 +220,7 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
   g.m1 = 3;
   g.m2 = 7;
   g.jitter = o.jitter;
+  g.degree = o.degree;
   const TwoBodies bodies = make_two_bodies(g, Material(o.E1, o.nu1), Material(o.E2, o.nu2));
   const double p = 0.01 * std::min(o.E1, o.E2);
   const SceneData scene = patch_test_scene(bodies, p);

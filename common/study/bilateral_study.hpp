@@ -26,6 +26,7 @@ struct TwoBodyOptions {
   double E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25;
   double L = 1, H1 = 0.5, H2 = 0.5;
   double jitter = 0;
+  int degree = 1;  // q of both bodies: set by the chapter (7: P2), not an option
 };
 void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
 
