@@ -1,4 +1,4 @@
-// Error norms of a P1 displacement against an exact solution: L2, H1 seminorm and energy.
+// Error norms of a P1 or P2 displacement against an exact solution: L2, H1 seminorm and energy.
 #pragma once
 
 #include <Eigen/Dense>
@@ -31,7 +31,8 @@ struct ErrorNorms {
   double relative_energy() const;
 };
 
-// Integrates with a triangle rule of the given degree (u is smooth; u_h is linear per element).
+// Integrates with a triangle rule of the given degree (u is smooth; u_h is linear per element,
+// or on a P2 mesh quadratic, evaluated by the six shape functions at every point).
 ErrorNorms error_norms(const Mesh& mesh, const Material& material, const Eigen::VectorXd& u_h,
                        const ExactSolution& exact, int degree = 6);
 

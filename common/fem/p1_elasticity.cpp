@@ -80,6 +80,7 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material) {
 }
 
 Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree) {
+  if (mesh.degree() == 2) return p2_body_force_vector(mesh, f, degree);
   const TriangleRule rule = triangle_rule(degree);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(mesh.num_dofs());
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
@@ -101,6 +102,7 @@ Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int de
 
 void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g,
                   int n_gauss) {
+  if (mesh.degree() == 2) return add_p2_traction(F, mesh, side, g, n_gauss);
   const SegmentRule rule = gauss_legendre(n_gauss);
   const auto& nodes = mesh.nodes_on(side);
   for (size_t e = 0; e + 1 < nodes.size(); ++e) {
@@ -118,6 +120,7 @@ void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorF
 
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const Material& material,
                                               const Eigen::VectorXd& u) {
+  if (mesh.degree() == 2) return p2_element_stresses(mesh, material, u);
   std::vector<Eigen::Vector3d> stress(mesh.triangles.size());
   const Eigen::Matrix3d C = material.voigt();
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {

@@ -48,12 +48,16 @@ SparseMatrix assemble_stiffness(const Mesh& mesh, const Material& material);
 void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
                             std::vector<Eigen::Triplet<double>>& triplets);
 
-// Load vector of a body force f: F_i = int f . phi_i, with a triangle rule of the given degree.
+// Load vector of a body force f: F_i = int f . phi_i, with a triangle rule of the given degree;
+// on a P2 mesh (the six shape functions, p2_elasticity.hpp) the rule's degree is degree + 2,
+// as the shape functions are one degree higher: f . phi_i is exact for f of degree `degree`.
 Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree);
-// Adds the load of a traction g on one side: F_i += int_side g . phi_i (Gauss-Legendre, n points).
+// Adds the load of a traction g on one side: F_i += int_side g . phi_i (Gauss-Legendre, n points;
+// n + 1 on a P2 mesh, whose side edges carry the quadratics (1-s)(1-2s), 4s(1-s), s(2s-1)).
 void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g, int n_gauss);
 
-// Constant stress (sigma_xx, sigma_yy, sigma_xy) in each triangle for a nodal field u.
+// Stress (sigma_xx, sigma_yy, sigma_xy) in each triangle for a nodal field u: constant on a P1
+// mesh; on a P2 mesh it is linear in the triangle, and this is its value at the centroid.
 std::vector<Eigen::Vector3d> element_stresses(const Mesh& mesh, const Material& material,
                                               const Eigen::VectorXd& u);
 

@@ -29,6 +29,15 @@ P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& x, const E
   return B;
 }
 
+Eigen::Matrix<double, 6, 1> p2_shape_values(const Eigen::Vector3d& l) {
+  Eigen::Matrix<double, 6, 1> N;
+  for (int k = 0; k < 3; ++k) {
+    N[k] = l[k] * (2 * l[k] - 1);
+    N[3 + k] = 4 * l[k] * l[(k + 1) % 3];
+  }
+  return N;
+}
+
 P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& x, const Material& material) {
   static const TriangleRule rule = triangle_rule(p2_stiffness_degree);
   return p2_element_stiffness(x, material, rule);
@@ -101,6 +110,62 @@ void add_p2_stiffness_triplets(const Mesh& mesh, const Material& material, int o
           for (int j = 0; j < 2; ++j)
             triplets.emplace_back(offset + 2 * e[a] + i, offset + 2 * e[b] + j, K(2 * a + i, 2 * b + j));
   }
+}
+
+Eigen::Matrix<double, 12, 1> p2_element_dofs(const Mesh& mesh, const Eigen::VectorXd& u, int t) {
+  const std::array<int, 6> e = p2_element_nodes(mesh, t);
+  Eigen::Matrix<double, 12, 1> ue;
+  for (int a = 0; a < 6; ++a) ue.segment<2>(2 * a) = u.segment<2>(2 * e[a]);
+  return ue;
+}
+
+Eigen::VectorXd p2_body_force_vector(const Mesh& mesh, const VectorField& f, int degree) {
+  // N is one degree above the P1 hats and the rule is raised by two: f . N is exact for f a
+  // polynomial of degree `degree` (on P1, of degree `degree` - 1)
+  const TriangleRule rule = triangle_rule(degree + 2);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(mesh.num_dofs());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto x = triangle_vertices(mesh, t);
+    const double area = mesh.area(t);
+    const std::array<int, 6> e = p2_element_nodes(mesh, t);
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q].x(), r = rule.points[q].y();
+      const Eigen::Matrix<double, 6, 1> N = p2_shape_values(Eigen::Vector3d(1 - s - r, s, r));
+      const Eigen::Vector2d fq = area * rule.weights[q] * f(x[0] + s * (x[1] - x[0]) + r * (x[2] - x[0]));
+      for (int a = 0; a < 6; ++a) F.segment<2>(2 * e[a]) += N[a] * fq;
+    }
+  }
+  return F;
+}
+
+void add_p2_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g, int n_gauss) {
+  // one point more than P1: the 1D shape functions are quadratic, not linear
+  const SegmentRule rule = gauss_legendre(n_gauss + 1);
+  const std::vector<int>& nodes = mesh.nodes_on(side);
+  // the side's nodes run vertex, midpoint, vertex, ...: edge e is (nodes[2e], nodes[2e+1], nodes[2e+2])
+  for (std::size_t e = 0; e + 2 < nodes.size(); e += 2) {
+    const int a = nodes[e], m = nodes[e + 1], b = nodes[e + 2];
+    const Eigen::Vector2d xa = mesh.nodes[a], xb = mesh.nodes[b];
+    const double length = (xb - xa).norm();
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double s = rule.points[q];
+      // the straight edge is affine in s, the midpoint at s = 1/2
+      const Eigen::Vector2d gq = length * rule.weights[q] * g(xa + s * (xb - xa));
+      F.segment<2>(2 * a) += (1 - s) * (1 - 2 * s) * gq;
+      F.segment<2>(2 * m) += 4 * s * (1 - s) * gq;
+      F.segment<2>(2 * b) += s * (2 * s - 1) * gq;
+    }
+  }
+}
+
+std::vector<Eigen::Vector3d> p2_element_stresses(const Mesh& mesh, const Material& material, const Eigen::VectorXd& u) {
+  // the strain is linear in the triangle: one value per triangle is the one at its centroid
+  const Eigen::Vector3d centroid = Eigen::Vector3d::Constant(1.0 / 3);
+  const Eigen::Matrix3d C = material.voigt();
+  std::vector<Eigen::Vector3d> stress(mesh.triangles.size());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
+    stress[t] = C * p2_strain_matrix(triangle_vertices(mesh, t), centroid) * p2_element_dofs(mesh, u, t);
+  return stress;
 }
 
 }  // namespace mortar

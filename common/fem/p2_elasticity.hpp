@@ -25,6 +25,9 @@ using P2StrainMatrix = Eigen::Matrix<double, 3, 12>;
 // with grad lambda_k from the P1 strain matrix (constant on the triangle).
 P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& vertices, const Eigen::Vector3d& lambda);
 
+// The six shape functions N_0..N_5 at the point with barycentric coordinates lambda.
+Eigen::Matrix<double, 6, 1> p2_shape_values(const Eigen::Vector3d& lambda);
+
 // B is linear, so B^T C B is a quadratic: a triangle rule of degree 2 integrates K_T exactly.
 constexpr int p2_stiffness_degree = 2;
 
@@ -49,5 +52,14 @@ std::array<int, 6> p2_element_nodes(const Mesh& mesh, int t);
 // offset; add_stiffness_triplets (p1_elasticity.hpp) calls it for a P2 mesh.
 void add_p2_stiffness_triplets(const Mesh& mesh, const Material& material, int offset,
                                std::vector<Eigen::Triplet<double>>& triplets);
+
+// The 12 unknowns of triangle t of a P2 mesh read out of a global field u, in element order.
+Eigen::Matrix<double, 12, 1> p2_element_dofs(const Mesh& mesh, const Eigen::VectorXd& u, int t);
+
+// The P2 versions of body_force_vector, add_traction and element_stresses (p1_elasticity.hpp),
+// which call them for a P2 mesh; the rules they use are stated there.
+Eigen::VectorXd p2_body_force_vector(const Mesh& mesh, const VectorField& f, int degree);
+void add_p2_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g, int n_gauss);
+std::vector<Eigen::Vector3d> p2_element_stresses(const Mesh& mesh, const Material& material, const Eigen::VectorXd& u);
 
 }  // namespace mortar
