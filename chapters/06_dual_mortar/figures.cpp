@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "common/interface/dual_basis.hpp"
+#include "common/study/contact_plots.hpp"
 #include "common/study/plot.hpp"
 
 namespace chapter06 {
@@ -55,21 +56,6 @@ mortar::Figure basis_panel(const mortar::MultiplierSpace& space, const mortar::I
   return fig;
 }
 
-mortar::Figure log_log(const std::string& title, const std::string& xlabel, const std::string& ylabel,
-                       const std::string& key) {
-  mortar::Figure fig;
-  fig.title = title;
-  fig.xlabel = xlabel;
-  fig.ylabel = ylabel;
-  fig.log_x = fig.log_y = true;
-  fig.key = key;
-  return fig;
-}
-
-mortar::Series column_series(const mortar::ConvergenceTable& table, const std::string& x, const std::string& y,
-                             const std::string& title, const std::string& style) {
-  return {title, table.column(x), table.column(y), "linespoints", style};
-}
 }  // namespace
 
 void plot_dual_basis(const std::string& folder, bool run) {
@@ -86,16 +72,16 @@ void plot_dual_basis(const std::string& folder, bool run) {
 
 void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTable& dual,
                           const mortar::ConvergenceTable* standard, bool run) {
-  mortar::Figure fig = log_log("standard and dual multipliers: errors against h (h2/h1 fixed)",
+  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers: errors against h (h2/h1 fixed)",
                                "h = max(h1, h2) [m]", "relative error [-]", "top left");
-  fig.series.push_back(column_series(dual, "h", "err_energy", "dual: u, energy", "pt 7 lw 2 lc rgb '#d62728'"));
-  fig.series.push_back(column_series(dual, "h", "err_pressure_function", "dual: lambda_h as a function, L2",
+  fig.series.push_back(mortar::table_series(dual, "h", "err_energy", "dual: u, energy", "pt 7 lw 2 lc rgb '#d62728'"));
+  fig.series.push_back(mortar::table_series(dual, "h", "err_pressure_function", "dual: lambda_h as a function, L2",
                                      "pt 5 lw 2 lc rgb '#ff7f0e'"));
-  fig.series.push_back(column_series(dual, "h", "err_pressure", "dual: coefficients at the nodes, L2",
+  fig.series.push_back(mortar::table_series(dual, "h", "err_pressure", "dual: coefficients at the nodes, L2",
                                      "pt 9 lw 2 lc rgb '#9467bd'"));
   if (standard != nullptr) {
-    fig.series.push_back(column_series(*standard, "h", "err_energy", "standard: u, energy", "pt 6 dt 2 lw 2 lc rgb '#1f77b4'"));
-    fig.series.push_back(column_series(*standard, "h", "err_pressure", "standard: lambda_h, L2",
+    fig.series.push_back(mortar::table_series(*standard, "h", "err_energy", "standard: u, energy", "pt 6 dt 2 lw 2 lc rgb '#1f77b4'"));
+    fig.series.push_back(mortar::table_series(*standard, "h", "err_pressure", "standard: lambda_h, L2",
                                        "pt 8 dt 2 lw 2 lc rgb '#2ca02c'"));
   }
   // A slope where theory speaks: the energy (Theorem 4.2), and the dual function, whose span
@@ -106,14 +92,14 @@ void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTa
 
 void plot_bases_against_time(const std::string& folder, const mortar::ConvergenceTable& dual,
                              const mortar::ConvergenceTable* standard, bool run) {
-  mortar::Figure fig = log_log("standard and dual multipliers: energy error against wall time",
+  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers: energy error against wall time",
                                "wall time of the level [s]", "relative error, broken energy norm [-]", "top right");
-  fig.series.push_back(column_series(dual, "time_s", "err_energy", "dual: condensed, one Cholesky of T^T K T",
+  fig.series.push_back(mortar::table_series(dual, "time_s", "err_energy", "dual: condensed, one Cholesky of T^T K T",
                                      "pt 7 lw 2 lc rgb '#d62728'"));
   if (standard != nullptr)
-    fig.series.push_back(column_series(*standard, "time_s", "err_energy", "standard: saddle point through S",
+    fig.series.push_back(mortar::table_series(*standard, "time_s", "err_energy", "standard: saddle point through S",
                                        "pt 6 dt 2 lw 2 lc rgb '#1f77b4'"));
-  fig.series.push_back(column_series(dual, "limit_s", "err_energy", "physical limit (assemble K, Cholesky, one solve)",
+  fig.series.push_back(mortar::table_series(dual, "limit_s", "err_energy", "physical limit (assemble K, Cholesky, one solve)",
                                      "pt 1 dt 3 lw 2 lc rgb '#000000'"));
   mortar::write_figure(folder, "error_vs_time", fig, run);
 }

@@ -9,6 +9,22 @@
 
 namespace mortar {
 
+Figure log_log_figure(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                      const std::string& key) {
+  Figure fig;
+  fig.title = title;
+  fig.xlabel = xlabel;
+  fig.ylabel = ylabel;
+  fig.log_x = fig.log_y = true;
+  fig.key = key;
+  return fig;
+}
+
+Series table_series(const ConvergenceTable& table, const std::string& x, const std::string& y,
+                    const std::string& title, const std::string& style) {
+  return {title, table.column(x), table.column(y), "linespoints", style};
+}
+
 namespace {
 Series curve_series(const InterfaceCurve& c, const std::string& title, const std::string& style,
                     const std::string& extra) {

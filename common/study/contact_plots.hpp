@@ -16,6 +16,12 @@ namespace mortar {
 // of the slopes): 0 energy, 1 u L2, 2 pressure L2, 3 its best approximation, 4 pressure
 // H^{-1/2}_h, 5 its best approximation, 6 jump. Each slope is drawn in its own colour and dash
 // (reference_slope_style), with its label: give one only where a theorem bounds the anchor.
+// An empty log-log figure, and one column of a table against another as a series.
+Figure log_log_figure(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                      const std::string& key);
+Series table_series(const ConvergenceTable& table, const std::string& x, const std::string& y,
+                    const std::string& title, const std::string& style);
+
 void plot_contact_errors(const std::string& folder, const ConvergenceTable& table,
                          const std::string& title, const std::vector<ReferenceSlope>& slopes,
                          bool run);

@@ -31,6 +31,13 @@ Series node_line(const std::vector<double>& x, double y, double tick, const std:
   return s;
 }
 
+// Where the trace's nodes lie: the element end points, and for P2 the midpoints between them.
+std::vector<double> node_positions(const InterfaceTrace& t) {
+  std::vector<double> x;
+  for (int j = 0; j < t.num_dofs(); ++j) x.push_back(t.node_x(j));
+  return x;
+}
+
 Series points_at(const std::vector<double>& x, double y, const std::string& title, const std::string& extra) {
   return Series{title, x, std::vector<double>(x.size(), y), "points", extra};
 }
@@ -81,25 +88,29 @@ Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, M
   const double y_nm = nm == 0 ? lift : 0, y_m = nm == 0 ? 0 : lift;
   const std::string xi1 = integral ? "xi^1: non-mortar nodes, M_h^1 lives here"
                                    : "xi^1: non-mortar nodes, one pointwise row each";
-  f.series.push_back(points_at(gamma.nonmortar_trace.x, y_nm, xi1, "pt 7 ps 1.3 lc rgb '#000000'"));
-  f.series.push_back(points_at(gamma.mortar_trace.x, y_m, "xi^2: mortar nodes", "pt 4 ps 1.3 lc rgb '#cc0000'"));
+  const std::vector<double> x_nm = node_positions(gamma.nonmortar_trace), x_m = node_positions(gamma.mortar_trace);
+  f.series.push_back(points_at(x_nm, y_nm, xi1, "pt 7 ps 1.3 lc rgb '#000000'"));
+  f.series.push_back(points_at(x_m, y_m, "xi^2: mortar nodes", "pt 4 ps 1.3 lc rgb '#cc0000'"));
   if (!integral) {
     // each pointwise row reads u^2 at x_a, between two mortar nodes: a dotted link from a to
     // the mortar trace
     const double nan = std::numeric_limits<double>::quiet_NaN();
     Series links{"the row of a: u^2 interpolated at x_a", {}, {}, "linespoints", "dt 3 pt 2 ps 0.8 lc rgb '#555555'"};
-    for (double x : gamma.nonmortar_trace.x) {
+    for (double x : x_nm) {
       links.x.insert(links.x.end(), {x, x, nan});
       links.y.insert(links.y.end(), {y_nm, y_m, nan});
     }
     f.series.push_back(links);
   }
   // the strip: the same nodes on number lines, then the merged grid
-  f.series.push_back(node_line(gamma.nonmortar_trace.x, bottom - row, tick, "strip: xi^1", "lw 2 lc rgb '#000000'"));
-  f.series.push_back(node_line(gamma.mortar_trace.x, bottom - 2 * row, tick, "strip: xi^2", "lw 2 lc rgb '#cc0000'"));
+  f.series.push_back(node_line(x_nm, bottom - row, tick, "strip: xi^1", "lw 2 lc rgb '#000000'"));
+  f.series.push_back(node_line(x_m, bottom - 2 * row, tick, "strip: xi^2", "lw 2 lc rgb '#cc0000'"));
   if (integral)
     f.series.push_back(node_line(gamma.grid.breakpoints, bottom - 3 * row, tick,
-                                 "strip: merged grid (every node of xi^1 and xi^2)", "lw 2 lc rgb '#228b22'"));
+                                 gamma.nonmortar_trace.degree == 1
+                                     ? "strip: merged grid (every node of xi^1 and xi^2)"
+                                     : "strip: merged grid (every element end of xi^1 and xi^2)",
+                                 "lw 2 lc rgb '#228b22'"));
   return f;
 }
 
@@ -142,7 +153,10 @@ Figure deformed_two_bodies(const TwoBodies& bodies, const Eigen::VectorXd& u, co
 std::vector<double> curve_at(const InterfaceCurve& curve, const std::vector<double>& x) {
   if (curve.x.size() < 2 || curve.value.size() != curve.x.size())
     throw std::invalid_argument("curve_at: the curve needs two points or more, one value each");
-  const InterfaceTrace trace{curve.x, {}};  // the curve's points as a 1D grid carrying P1 hats
+  // the curve's pieces as a 1D grid of its degree, its points the grid's nodes
+  InterfaceTrace trace;
+  trace.degree = curve.degree;
+  for (std::size_t k = 0; k < curve.x.size(); k += static_cast<std::size_t>(curve.degree)) trace.x.push_back(curve.x[k]);
   std::vector<double> out;
   out.reserve(x.size());
   for (double xi : x) out.push_back(trace.evaluate(curve.value, xi));

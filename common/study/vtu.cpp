@@ -1,5 +1,7 @@
 #include "common/study/vtu.hpp"
 
+#include "common/fem/p2_elasticity.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -107,6 +109,17 @@ VtuGrid triangle_grid(const Mesh& mesh, const Eigen::VectorXd& u) {
   VtuGrid g;
   g.points = mesh.nodes;
   for (const auto& t : mesh.triangles) g.connectivity.insert(g.connectivity.end(), t.begin(), t.end());
+  if (mesh.degree() == 2) {
+    // VTK_QUADRATIC_TRIANGLE: the three vertices, then the midpoints of edges 0-1, 1-2, 2-0,
+    // the order of p2_element_nodes
+    g.cell_type = 22;
+    g.points_per_cell = 6;
+    g.connectivity.clear();
+    for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+      const std::array<int, 6> nodes = p2_element_nodes(mesh, t);
+      g.connectivity.insert(g.connectivity.end(), nodes.begin(), nodes.end());
+    }
+  }
   VtuArray displacement{"displacement", 3, {}};
   for (int a = 0; a < mesh.num_nodes(); ++a) displacement.values.insert(displacement.values.end(), {u[2 * a], u[2 * a + 1], 0.0});
   g.point_data.push_back(std::move(displacement));
