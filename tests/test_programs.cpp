@@ -491,3 +491,51 @@ TEST(Programs, ch05_a_contact_zone_narrower_than_an_element_is_reported_as_penet
   EXPECT_LE(summary_value(open, "results", "max_penetration_m"), 0.0);
   EXPECT_NE(g.output.find("the bodies do not touch"), std::string::npos) << g.output;
 }
+
+TEST(Programs, ch07_refuses_malformed_input) {
+  expect_all_refused(CH07, common_bad_inputs(),
+                     {{"--n0 1", "n0"}, {"--E1 -1", "E1"}, {"--E2 0", "E2"}, {"--nu1 0.5", "nu1"},
+                      {"--nu2 0.7", "nu2"}, {"--h-ratio 0", "h-ratio"}, {"--h-ratio inf", "h-ratio"},
+                      {"--nonmortar 3", "nonmortar"}, {"--matching mortar", "matching"},
+                      {"--matching", "matching"}, {"--no-p1=yes", "no-p1"}, {"--aspect 0", "aspect"}});
+}
+
+// Chapter 7 on P2 levels of 6, 12 and 24 non-mortar elements (272 to 3572 unknowns). Integral
+// matching: the energy rate of Theorem 4.2 with q = 2 (measured 1.92-1.98 over these levels at
+// the four ratios; band >= 1.85) and the L2 rate 3 (measured 3.02-3.11; band >= 2.9), the patch
+// test to round-off. Pointwise matching at h2/h1 = 1/3: Theorem 4.1's h^{1/2} already shows
+// (measured 0.51; band <= 0.7), and the patch test fails.
+TEST(Programs, ch07_p2_rates_and_patch_tests) {
+  for (const char* ratio : {"3/2", "2/3", "1/3", "3"}) {
+    const std::string dir = out_dir("ch07_rates");
+    const ProgramRun r = run(std::string(CH07) + " --quick --no-plot --no-p1 --h-ratio " + ratio + " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_GE(summary_value(dir, "rates", "err_energy"), 1.85) << "h2/h1 = " << ratio;
+    EXPECT_GE(summary_value(dir, "rates", "err_l2"), 2.9) << "h2/h1 = " << ratio;
+    EXPECT_LT(summary_value(dir, "results", "patch_test_rel_error"), 1e-10) << "h2/h1 = " << ratio;
+    EXPECT_GT(summary_value(dir, "results", "patch_test_rel_error_pointwise"), 1e-4) << "h2/h1 = " << ratio;
+  }
+  const std::string dir = out_dir("ch07_pointwise");
+  const ProgramRun r =
+      run(std::string(CH07) + " --quick --no-plot --no-p1 --matching pointwise --h-ratio 1/3 --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_LE(summary_value(dir, "rates", "err_energy"), 0.7);
+  EXPECT_GT(summary_value(dir, "rates", "err_energy"), 0.3);
+  EXPECT_GT(summary_value(dir, "results", "patch_test_rel_error"), 1e-4);
+}
+
+// P2 beside P1 with the same unknowns (p1.csv): P2's energy error is below P1's at every level
+// from the second on, and it reaches P1's finest error with fewer unknowns.
+TEST(Programs, ch07_p2_beats_p1_at_equal_unknowns) {
+  const std::string dir = out_dir("ch07_p1");
+  const ProgramRun r = run(std::string(CH07) + " --quick --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto p2 = csv_column(dir + "/convergence.csv", "err_energy");
+  const auto p1 = csv_column(dir + "/p1.csv", "err_energy");
+  const auto d2 = csv_column(dir + "/convergence.csv", "dofs"), d1 = csv_column(dir + "/p1.csv", "dofs");
+  ASSERT_EQ(p2.size(), 3u);
+  ASSERT_EQ(p1.size(), 3u);
+  for (std::size_t k = 0; k < p2.size(); ++k) EXPECT_EQ(d1[k], d2[k]) << "level " << k;
+  for (std::size_t k = 1; k < p2.size(); ++k) EXPECT_LT(p2[k], p1[k]) << "level " << k;
+  EXPECT_GT(summary_value(dir, "results", "dofs_ratio_p1_over_p2"), 1.0);
+}
