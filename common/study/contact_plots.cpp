@@ -145,7 +145,9 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
   const double L = all.x.empty() ? 1.0 : all.x.back();
   std::size_t first = 0;
   while (first + 1 < nonmortar.size() && nonmortar[first + 1] <= 0.3 * L) ++first;
-  const std::size_t last = std::min(first + 4, nonmortar.empty() ? 0 : nonmortar.size() - 1);
+  // four elements: 4 q node steps (a P2 trace also has its midpoints among the nodes)
+  const std::size_t steps = 4 * static_cast<std::size_t>(level.pressure.degree);
+  const std::size_t last = std::min(first + steps, nonmortar.empty() ? 0 : nonmortar.size() - 1);
   const double lo = nonmortar.empty() ? 0.3 * L : nonmortar[first];
   const double hi = nonmortar.empty() ? 0.35 * L : nonmortar[last];
 
@@ -163,7 +165,9 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
                 lo, hi);
   fig.settings.push_back(window);
   Series points = all;
-  points.title = "whole Gamma_c: [u_h.n] at every merged-grid node";
+  const bool quadratic = level.jump.degree == 2;
+  points.title = quadratic ? "whole Gamma_c: [u_h.n] at every merged-grid node and segment midpoint"
+                           : "whole Gamma_c: [u_h.n] at every merged-grid node";
   points.extra = "pt 7 ps 0.5 lc rgb '#d62728'";
   fig.series.push_back(points);
 
@@ -182,12 +186,23 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
   char xrange[96];
   std::snprintf(xrange, sizeof xrange, "set xrange [%.12g:%.12g]", lo, hi);
   zoom.settings.push_back(xrange);
-  Series inside{"[u_h.n], P1 on the merged grid", {}, {}, "linespoints", "pt 7 ps 1 lw 2 lc rgb '#d62728'"};
+  const auto in_window = [&](double x) { return x >= lo - 1e-12 * L && x <= hi + 1e-12 * L; };
+  Series inside{quadratic ? "[u_h.n] at the merged-grid nodes and segment midpoints" : "[u_h.n], P1 on the merged grid",
+                {}, {}, quadratic ? "points" : "linespoints", "pt 7 ps 1 lw 2 lc rgb '#d62728'"};
   for (std::size_t i = 0; i < all.x.size(); ++i)
-    if (all.x[i] >= lo - 1e-12 * L && all.x[i] <= hi + 1e-12 * L) {
+    if (in_window(all.x[i])) {
       inside.x.push_back(all.x[i]);
       inside.y.push_back(all.y[i]);
     }
+  // a quadratic piece drawn as the curve it is, sampled at 16 points
+  Series pieces{"[u_h.n], quadratic on each merged segment", {}, {}, "lines", "lw 2 lc rgb '#d62728'"};
+  for (int e = 0; quadratic && e < level.jump.pieces(); ++e)
+    if (in_window(level.jump.x[2 * e]) && in_window(level.jump.x[2 * e + 2]))
+      for (int k = 0; k <= 16; ++k) {
+        const double s = k / 16.0;
+        pieces.x.push_back(level.jump.x[2 * e] + s * (level.jump.x[2 * e + 2] - level.jump.x[2 * e]));
+        pieces.y.push_back(level.jump.at(e, s));
+      }
   Series nodes{"non-mortar nodes (side 1)", {}, {}, "points", "pt 2 ps 2 lw 2 lc rgb '#1f77b4'"};
   for (double x : nonmortar)
     if (x >= lo - 1e-12 * L && x <= hi + 1e-12 * L) {
@@ -195,6 +210,7 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
       nodes.y.push_back(0);
     }
   zoom.series = {inside, nodes};
+  if (quadratic) zoom.series.insert(zoom.series.begin(), pieces);
   fig.panels.push_back(zoom);
   write_figure(folder, "jump", fig, run);
 }
