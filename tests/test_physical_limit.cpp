@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -50,6 +51,26 @@ TEST(PhysicalLimit, repetitions_run_the_level_and_the_limit_min_or_max_times) {
     EXPECT_EQ(levels, c.runs) << "Repetitions{" << c.r.min << ", " << c.r.max << ", " << c.r.budget_s << "}";
     EXPECT_EQ(limits, c.runs);
     EXPECT_EQ(t.repeats, c.runs);
+  }
+}
+
+// MORTAR_TIME_ONCE=1 (set for the runs under the sanitizers): one run of each, whatever the
+// repetitions ask; any other value leaves them as they are.
+TEST(PhysicalLimit, time_once_runs_each_once) {
+  for (const char* value : {"1", "0"}) {
+    ASSERT_EQ(setenv("MORTAR_TIME_ONCE", value, 1), 0);
+    int levels = 0, limits = 0;
+    const TimedLevel t = time_against_limit([&] { ++levels; },
+                                            [&] {
+                                              ++limits;
+                                              return small_K();
+                                            },
+                                            {3, 3, 10.0});
+    unsetenv("MORTAR_TIME_ONCE");
+    const int expected = std::string(value) == "1" ? 1 : 3;
+    EXPECT_EQ(levels, expected) << "MORTAR_TIME_ONCE=" << value;
+    EXPECT_EQ(limits, expected);
+    EXPECT_EQ(t.repeats, expected);
   }
 }
 

@@ -31,7 +31,10 @@ struct TimedLevel {
 
 // How often: at least `min` times each, then more while the level and its limit together
 // have taken less than `budget_s` (small levels, where one timing is noisy: with two threads
-// the spread of two runs reached 20-50% below a second), at most `max`.
+// the spread of two runs reached 20-50% below a second), at most `max`. With the environment
+// variable MORTAR_TIME_ONCE=1, once each whatever these say: the test suite sets it for the
+// runs under the sanitizers (tests/CMakeLists.txt), where time means nothing and every
+// repetition costs.
 struct Repetitions {
   int min = 2, max = 5;
   double budget_s = 1.0;
