@@ -215,7 +215,7 @@ PatchTestResult run_patch_test(const BilateralStudyOptions& o, Matching matching
   g.L = o.L;
   g.H1 = o.H1;
   g.H2 = o.H2;
-  g.n1 = 6;   // h2 / h1 = 3 / 7: n2 = 14, no node of one trace on the other but the ends
+  g.n1 = 6;   // h2 / h1 = 3 / 7: n2 = 14; the traces share only the ends and x = L / 2
   g.n2 = 14;
   g.m1 = 3;
   g.m2 = 7;
