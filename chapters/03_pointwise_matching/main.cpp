@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
     const mortar::BilateralStudy study =
-        mortar::run_bilateral_study(o, exact, {mortar::Matching::pointwise, chapter03::solve_pointwise_matching});
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::pointwise, chapter03::solve_pointwise_matching, {}});
 
     // 4. What Theorem 4.1 says, next to what we see.
     mortar::write_bilateral_outputs(o, parser, study);

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     // 3. Refine both meshes together with h2/h1 fixed, each level solved by the steps of
     //    level.cpp, then the patch test (h2/h1 = 3/7).
     const mortar::BilateralStudy study =
-        mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, chapter04::solve_integral_matching});
+        mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, chapter04::solve_integral_matching, {}});
 
     // 4. What theory says, next to what we see.
     mortar::write_bilateral_outputs(o, parser, study);

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
+#include "common/fem/lagrange_1d.hpp"
 #include "common/fem/quadrature.hpp"
 #include "common/interface/dual_basis.hpp"
-#include "common/interface/lagrange_1d.hpp"
 #include "common/study/profile.hpp"
 
 namespace mortar {

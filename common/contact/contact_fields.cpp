@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "common/interface/lagrange_1d.hpp"
-#include "common/study/profile.hpp"
+#include "common/fem/lagrange_1d.hpp"
 #include "common/fem/quadrature.hpp"
+#include "common/study/profile.hpp"
 
 namespace mortar {
 
@@ -32,8 +32,7 @@ InterfaceCurve contact_pressure(const ContactInterface& g, const Constraints& c,
                                 const Eigen::VectorXd& lambda) {
   const ProfilePhase phase("post-processing");
   const InterfaceTrace& t = g.nonmortar_trace;
-  InterfaceCurve p{{}, std::vector<double>(static_cast<std::size_t>(t.num_dofs()), 0.0), t.degree};
-  for (int j = 0; j < t.num_dofs(); ++j) p.x.push_back(t.node_x(j));
+  InterfaceCurve p{t.node_positions(), std::vector<double>(static_cast<std::size_t>(t.num_dofs()), 0.0), t.degree};
   if (c.matching == Matching::integral) {
     // lambda_h = sum_i lambda_i psi_i = sum_j (C^T lambda)_j phi_j
     const Eigen::VectorXd nodal = g.space.C.transpose() * multiplier_coefficients(g, c, lambda);

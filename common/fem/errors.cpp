@@ -54,11 +54,12 @@ ErrorNorms p2_error_norms(const Mesh& mesh, const Material& material, const Eige
     const auto x = triangle_vertices(mesh, t);
     const double area = mesh.area(t);
     const Eigen::Matrix<double, 12, 1> ue = p2_element_dofs(mesh, u_h, t);
+    const BarycentricGradients gradients = barycentric_gradients(x);
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double s = rule.points[q].x(), r = rule.points[q].y();
       const Eigen::Vector3d lambda(1 - s - r, s, r);
       const Eigen::Matrix<double, 6, 1> N = p2_shape_values(lambda);
-      const P2StrainMatrix B = p2_strain_matrix(x, lambda);
+      const P2StrainMatrix B = p2_strain_matrix(gradients, lambda);
       Eigen::Vector2d uh = Eigen::Vector2d::Zero();
       Eigen::Matrix2d grad_h = Eigen::Matrix2d::Zero();
       for (int a = 0; a < 6; ++a) {

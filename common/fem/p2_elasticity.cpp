@@ -6,13 +6,24 @@
 #include <string>
 #include <utility>
 
+#include "common/fem/lagrange_1d.hpp"
+
 namespace mortar {
 
-P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& x, const Eigen::Vector3d& lambda) {
-  // grad lambda_k, read off the P1 strain matrix (it checks the orientation of the triangle)
+BarycentricGradients barycentric_gradients(const std::array<Eigen::Vector2d, 3>& x) {
+  // read off the P1 strain matrix (it checks the orientation of the triangle)
   const StrainMatrix B1 = strain_matrix(x);
-  std::array<Eigen::Vector2d, 3> g;
-  for (int k = 0; k < 3; ++k) g[k] = Eigen::Vector2d(B1(0, 2 * k), B1(1, 2 * k + 1));
+  BarycentricGradients out;
+  for (int k = 0; k < 3; ++k) out.g[k] = Eigen::Vector2d(B1(0, 2 * k), B1(1, 2 * k + 1));
+  return out;
+}
+
+P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& x, const Eigen::Vector3d& lambda) {
+  return p2_strain_matrix(barycentric_gradients(x), lambda);
+}
+
+P2StrainMatrix p2_strain_matrix(const BarycentricGradients& gradients, const Eigen::Vector3d& lambda) {
+  const std::array<Eigen::Vector2d, 3>& g = gradients.g;
   std::array<Eigen::Vector2d, 6> grad;
   for (int k = 0; k < 3; ++k) {
     const int l = (k + 1) % 3;
@@ -47,10 +58,11 @@ P2ElementMatrix p2_element_stiffness(const std::array<Eigen::Vector2d, 3>& x, co
                                      const TriangleRule& rule) {
   const double area = 0.5 * ((x[1] - x[0]).x() * (x[2] - x[0]).y() - (x[1] - x[0]).y() * (x[2] - x[0]).x());
   const Eigen::Matrix3d C = material.voigt();
+  const BarycentricGradients gradients = barycentric_gradients(x);
   P2ElementMatrix K = P2ElementMatrix::Zero();
   for (std::size_t q = 0; q < rule.points.size(); ++q) {
     const double s = rule.points[q].x(), t = rule.points[q].y();
-    const P2StrainMatrix B = p2_strain_matrix(x, Eigen::Vector3d(1 - s - t, s, t));
+    const P2StrainMatrix B = p2_strain_matrix(gradients, Eigen::Vector3d(1 - s - t, s, t));
     K += (area * rule.weights[q]) * B.transpose() * C * B;
   }
   return K;
@@ -151,9 +163,10 @@ void add_p2_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const Vect
       const double s = rule.points[q];
       // the straight edge is affine in s, the midpoint at s = 1/2
       const Eigen::Vector2d gq = length * rule.weights[q] * g(xa + s * (xb - xa));
-      F.segment<2>(2 * a) += (1 - s) * (1 - 2 * s) * gq;
-      F.segment<2>(2 * m) += 4 * s * (1 - s) * gq;
-      F.segment<2>(2 * b) += s * (2 * s - 1) * gq;
+      const std::array<double, 3> phi = lagrange_1d(2, s);
+      F.segment<2>(2 * a) += phi[0] * gq;
+      F.segment<2>(2 * m) += phi[1] * gq;
+      F.segment<2>(2 * b) += phi[2] * gq;
     }
   }
 }

@@ -25,6 +25,14 @@ using P2StrainMatrix = Eigen::Matrix<double, 3, 12>;
 // with grad lambda_k from the P1 strain matrix (constant on the triangle).
 P2StrainMatrix p2_strain_matrix(const std::array<Eigen::Vector2d, 3>& vertices, const Eigen::Vector3d& lambda);
 
+// grad lambda_k of a triangle, constant on it: computed once per triangle and given to the
+// strain matrix at each quadrature point (the loops over triangles do that).
+struct BarycentricGradients {
+  std::array<Eigen::Vector2d, 3> g;
+};
+BarycentricGradients barycentric_gradients(const std::array<Eigen::Vector2d, 3>& vertices);
+P2StrainMatrix p2_strain_matrix(const BarycentricGradients& gradients, const Eigen::Vector3d& lambda);
+
 // The six shape functions N_0..N_5 at the point with barycentric coordinates lambda.
 Eigen::Matrix<double, 6, 1> p2_shape_values(const Eigen::Vector3d& lambda);
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/interface/lagrange_1d.hpp"
+#include "common/fem/lagrange_1d.hpp"
 
 namespace mortar {
 
@@ -60,6 +60,13 @@ Eigen::SparseMatrix<double> InterfaceTrace::mass_matrix() const {
   Eigen::SparseMatrix<double> mass(num_dofs(), num_dofs());
   mass.setFromTriplets(entries.begin(), entries.end());
   return mass;
+}
+
+std::vector<double> InterfaceTrace::node_positions() const {
+  std::vector<double> positions;
+  positions.reserve(static_cast<std::size_t>(num_dofs()));
+  for (int j = 0; j < num_dofs(); ++j) positions.push_back(node_x(j));
+  return positions;
 }
 
 std::vector<double> InterfaceTrace::node_integrals() const {

@@ -4,7 +4,7 @@
 //
 // Numbering: the elements are [x_e, x_{e+1}], e = 0 .. N-1. A P1 trace has the N + 1 nodes x_e.
 // A P2 trace has 2N + 1 nodes: node 2e is x_e and node 2e + 1 the midpoint of element e. So
-// in both, local function l of element e (lagrange_1d.hpp) belongs to node q e + l.
+// in both, local function l of element e (common/fem/lagrange_1d.hpp) belongs to node q e + l.
 #pragma once
 
 #include <Eigen/Sparse>
@@ -25,6 +25,7 @@ struct InterfaceTrace {
   // The trace nodes, q N + 1: the columns of D and M, the rows of pointwise matching.
   int num_dofs() const { return degree * num_elements() + 1; }
   double node_x(int j) const { return j % degree == 0 ? x[j / degree] : 0.5 * (x[j / degree] + x[j / degree + 1]); }
+  std::vector<double> node_positions() const;  // node_x of every node
   double length() const { return x.back() - x.front(); }
   double max_element_length() const;
   // Index e of the element [x_e, x_{e+1}] holding the point (the last one for the end point).

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/fem/lagrange_1d.hpp"
 #include "common/fem/quadrature.hpp"
-#include "common/interface/lagrange_1d.hpp"
 #include "common/study/profile.hpp"
 
 namespace mortar {

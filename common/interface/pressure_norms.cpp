@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "common/fem/lagrange_1d.hpp"
 #include "common/fem/quadrature.hpp"
-#include "common/interface/lagrange_1d.hpp"
 
 namespace mortar {
 
@@ -148,9 +148,7 @@ InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<
                              " multipliers) could not be factored");
   const Eigen::VectorXd coefficients = factor.solve(Eigen::VectorXd(C * load));
   const Eigen::VectorXd nodal = C.transpose() * coefficients;
-  InterfaceCurve out{{}, std::vector<double>(nodal.data(), nodal.data() + nodal.size()), q};
-  for (int j = 0; j < t.num_dofs(); ++j) out.x.push_back(t.node_x(j));
-  return out;
+  return {t.node_positions(), std::vector<double>(nodal.data(), nodal.data() + nodal.size()), q};
 }
 
 PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCurve& p_h,

@@ -31,13 +31,6 @@ Series node_line(const std::vector<double>& x, double y, double tick, const std:
   return s;
 }
 
-// Where the trace's nodes lie: the element end points, and for P2 the midpoints between them.
-std::vector<double> node_positions(const InterfaceTrace& t) {
-  std::vector<double> x;
-  for (int j = 0; j < t.num_dofs(); ++j) x.push_back(t.node_x(j));
-  return x;
-}
-
 Series points_at(const std::vector<double>& x, double y, const std::string& title, const std::string& extra) {
   return Series{title, x, std::vector<double>(x.size(), y), "points", extra};
 }
@@ -88,7 +81,8 @@ Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, M
   const double y_nm = nm == 0 ? lift : 0, y_m = nm == 0 ? 0 : lift;
   const std::string xi1 = integral ? "xi^1: non-mortar nodes, M_h^1 lives here"
                                    : "xi^1: non-mortar nodes, one pointwise row each";
-  const std::vector<double> x_nm = node_positions(gamma.nonmortar_trace), x_m = node_positions(gamma.mortar_trace);
+  // the trace nodes: element end points, and for P2 the midpoints between them
+  const std::vector<double> x_nm = gamma.nonmortar_trace.node_positions(), x_m = gamma.mortar_trace.node_positions();
   f.series.push_back(points_at(x_nm, y_nm, xi1, "pt 7 ps 1.3 lc rgb '#000000'"));
   f.series.push_back(points_at(x_m, y_m, "xi^2: mortar nodes", "pt 4 ps 1.3 lc rgb '#cc0000'"));
   if (!integral) {

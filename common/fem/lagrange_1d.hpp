@@ -1,8 +1,8 @@
-// The Lagrange basis of degree 1 or 2 on one element of a trace, in the element's local
-// coordinate s in [0, 1] (paper section 3: the traces of P_q elements on Gamma_c, q = 1, 2):
+// The Lagrange basis of degree 1 or 2 on a 1D element, in its local coordinate s in [0, 1]:
+// the traces of P_q triangles on a side (loads on a side) and on Gamma_c (paper section 3):
 //     q = 1:  1 - s,  s                                  (nodes s = 0, 1)
 //     q = 2:  (1 - s)(1 - 2s),  4 s (1 - s),  s (2s - 1)   (nodes s = 0, 1/2, 1)
-// The local function l of element e belongs to trace node q e + l (interface_trace.hpp).
+// On a trace, the local function l of element e belongs to node q e + l (interface_trace.hpp).
 #pragma once
 
 #include <array>
