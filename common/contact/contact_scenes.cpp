@@ -20,7 +20,7 @@ void add_body(SceneData& scene, const TwoBodies& bodies, int l, const Eigen::Vec
 }
 }  // namespace
 
-SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact& exact) {
+SceneData manufactured_scene(const TwoBodies& bodies, const ExactContact& exact) {
   SceneData scene;
   scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());
   for (int l = 0; l < 2; ++l) {
@@ -40,7 +40,7 @@ SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact&
   return scene;
 }
 
-SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ManufacturedContact& exact) {
+SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ExactContact& exact) {
   SceneData scene;
   scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());
   for (int l = 0; l < 2; ++l) {

@@ -17,12 +17,12 @@ struct SceneData {
 
 // The manufactured solution: exact body forces, u prescribed on the top of body 1 and the
 // bottom of body 2, exact tractions sigma n on the four lateral sides. K is then definite.
-SceneData manufactured_scene(const TwoBodies& bodies, const ManufacturedContact& exact);
+SceneData manufactured_scene(const TwoBodies& bodies, const ExactContact& exact);
 
 // The same solution with u prescribed on every outer side (top, left and right of body 1;
 // bottom, left and right of body 2): no side is free, so no corner mixes a support with a
 // free edge, and the exact solution is the only solution (chapter 5's signorini scene).
-SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ManufacturedContact& exact);
+SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ExactContact& exact);
 
 // The patch test: a uniform pressure p on the top of body 1, rollers under body 2 (u_y = 0)
 // and on the left sides of both (u_x = 0), the right sides free. The exact stress is

@@ -65,13 +65,13 @@ ManufacturedContact::ManufacturedContact(const Material& body1, const Material& 
     : ManufacturedContact(body1, body2, sloped_profile(L)) {}
 
 ManufacturedContact::ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile)
-    : m1_(body1), m2_(body2), profile_(std::move(profile)) {
+    : ExactContact(body1, body2), profile_(std::move(profile)) {
   alpha_[0] = 1.0;
   alpha_[1] = -0.5;  // different tangential displacements: the interface slips
   beta_[0] = -1.0;
   // (4): lambda_1 alpha_1 + (lambda_1 + 2 mu_1) beta_1 = lambda_2 alpha_2 + (lambda_2 + 2 mu_2) beta_2
-  const double S = m1_.lambda() * alpha_[0] + (m1_.lambda() + 2 * m1_.mu()) * beta_[0];
-  beta_[1] = (S - m2_.lambda() * alpha_[1]) / (m2_.lambda() + 2 * m2_.mu());
+  const double S = material(0).lambda() * alpha_[0] + (material(0).lambda() + 2 * material(0).mu()) * beta_[0];
+  beta_[1] = (S - material(1).lambda() * alpha_[1]) / (material(1).lambda() + 2 * material(1).mu());
 }
 
 Eigen::Vector2d ManufacturedContact::u(int l, const Eigen::Vector2d& p) const {
@@ -90,13 +90,6 @@ Eigen::Matrix2d ManufacturedContact::grad_u(int l, const Eigen::Vector2d& p) con
   return A * G;
 }
 
-Eigen::Matrix2d ManufacturedContact::stress(int l, const Eigen::Vector2d& p) const {
-  const Eigen::Matrix2d G = grad_u(l, p);
-  const Eigen::Matrix2d eps = 0.5 * (G + G.transpose());
-  const Material& m = material(l);
-  return m.lambda() * eps.trace() * Eigen::Matrix2d::Identity() + 2 * m.mu() * eps;
-}
-
 Eigen::Vector2d ManufacturedContact::body_force(int l, const Eigen::Vector2d& p) const {
   const double y = p.y();
   const ProfileValues f = profile_(p.x());
@@ -111,15 +104,10 @@ Eigen::Vector2d ManufacturedContact::body_force(int l, const Eigen::Vector2d& p)
 }
 
 double ManufacturedContact::pressure(double x) const {
-  const double S = m1_.lambda() * alpha_[0] + (m1_.lambda() + 2 * m1_.mu()) * beta_[0];
+  const double S = material(0).lambda() * alpha_[0] + (material(0).lambda() + 2 * material(0).mu()) * beta_[0];
   return -A * S * profile_(x).w;
 }
 
 double ManufacturedContact::normal_displacement(double x) const { return A * profile_(x).c; }
-
-ExactSolution ManufacturedContact::exact(int l) const {
-  return {[this, l](const Eigen::Vector2d& p) { return u(l, p); },
-          [this, l](const Eigen::Vector2d& p) { return grad_u(l, p); }};
-}
 
 }  // namespace mortar

@@ -20,8 +20,7 @@
 #include <Eigen/Dense>
 #include <functional>
 
-#include "common/fem/errors.hpp"
-#include "common/fem/p1_elasticity.hpp"
+#include "common/contact/exact_contact.hpp"
 
 namespace mortar {
 
@@ -42,23 +41,19 @@ double signorini_contact_point(double L);
 // The initial gap of the signorini scene, A kappa (x - x*)_+^2 with kappa = 1 / L.
 double signorini_gap(double L, double x);
 
-class ManufacturedContact {
+class ManufacturedContact : public ExactContact {
  public:
   ManufacturedContact(const Material& body1, const Material& body2, double L);  // sloped
   ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile);
 
   // l = 0 (body 1, y > 0) or 1 (body 2, y < 0)
-  Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const;
-  Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const;
-  Eigen::Matrix2d stress(int l, const Eigen::Vector2d& p) const;
-  Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const;  // f = -div sigma
-  double pressure(double x) const;           // -sigma_N on Gamma_c
+  Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const override;
+  Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const override;
+  Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const override;  // f = -div sigma
+  double pressure(double x) const override;    // -sigma_N on Gamma_c
   double normal_displacement(double x) const;  // u^1_y = u^2_y = c(x) on Gamma_c
-  ExactSolution exact(int l) const;
-  const Material& material(int l) const { return l == 0 ? m1_ : m2_; }
 
  private:
-  Material m1_, m2_;
   ContactProfile profile_;
   double alpha_[2], beta_[2];
 };
