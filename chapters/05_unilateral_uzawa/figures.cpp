@@ -78,7 +78,7 @@ void write_contact_csv(const std::string& path, const UnilateralLevel& r) {
 }
 
 void plot_pressures(const std::string& folder, const Options& o, const Reference& ref,
-                    const mortar::ManufacturedContact& exact,
+                    const mortar::ExactContact& exact,
                     const std::vector<const UnilateralLevel*>& levels, bool run) {
   Figure fig;
   fig.title = "contact pressure on the finest mesh, scene " + o.scene;
@@ -189,35 +189,85 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 
-void plot_theorem_5_1(const std::string& folder, const mortar::ConvergenceTable& table,
-                      const std::string& matching, const std::vector<SolverRun>& runs, bool run) {
+void plot_theorem_5_1(const std::string& folder, const Options& o, const mortar::ConvergenceTable& table,
+                      const std::vector<SolverRun>& runs, bool run) {
   Figure fig;
-  fig.title = "signorini scene: energy error against h, beside Theorem 5.1 and the optimal bound";
+  char title[200];
+  std::snprintf(title, sizeof title, "scene %s, h2/h1 = %.4g, non-mortar side %d: energy error against h",
+                o.scene.c_str(), o.h_ratio, o.nonmortar);
+  fig.title = title;
   fig.xlabel = "h = max(h1, h2) [m]";
   fig.ylabel = "relative error of u in the broken energy norm [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "bottom right";
-  // both matchings from the solver comparison when it ran (active set), else this run's
-  for (const std::string m : {"integral", "pointwise"}) {
-    Series s{m + " matching", {}, {}, "linespoints",
-             m == "integral" ? "pt 7 ps 1.6 lw 3 lc rgb '#1f77b4'" : "pt 6 ps 1.2 lw 2 dt 3 lc rgb '#d62728'"};
+  fig.key = "outside below maxrows 3";
+  fig.height = 760;
+  // both matchings and the dual basis from the solver comparison when it ran, else this run's
+  struct Curve {
+    std::string matching, solver, title, style;
+  };
+  const Curve curves[] = {
+      {"integral", "pdas", "integral matching, standard M_h^1", "pt 7 ps 1.6 lw 3 lc rgb '#1f77b4'"},
+      {"pointwise", "pdas", "pointwise matching", "pt 6 ps 1.2 lw 2 dt 3 lc rgb '#d62728'"},
+      {"integral", "dual-newton", "integral matching, dual basis (chapter 6)", "pt 4 ps 1.2 lw 2 dt 2 lc rgb '#9467bd'"}};
+  for (const Curve& c : curves) {
+    Series s{c.title, {}, {}, "linespoints", c.style};
     for (const SolverRun& r : runs)
-      if (r.matching == m && r.solver == "pdas") {
+      if (r.matching == c.matching && r.solver == c.solver) {
         s.x.push_back(r.h);
         s.y.push_back(std::max(r.error, 1e-16));
       }
-    if (s.x.empty() && m == matching) {
+    const std::string own = o.solver == "dual-newton" ? "dual-newton" : "pdas";
+    if (runs.empty() && c.matching == o.matching && c.solver == own) {
       s.x = table.column("h");
       s.y = table.column("err_energy");
     }
     if (!s.x.empty()) fig.series.push_back(s);
   }
   // Theorem 5.1 bounds the energy error by C (h1^{1/4} + h2); the optimal O(h) is proved
-  // later (Hueber-Wohlmuth 2005; Drouet-Hild 2015). Both drawn through the finest point.
-  // Each in its own colour and dash (mortar::reference_slope_style).
-  fig.slopes.push_back({1.0, 0, 0.3, "slope 1 (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)", ""});
-  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 (Theorem 5.1: C (h1^{1/4} + h2))", ""});
+  // later (Hueber-Wohlmuth 2005; Drouet-Hild 2015). Both drawn through the coarsest point of
+  // the first curve, so that no measurement sits above a line by the way it is drawn.
+  fig.slopes.push_back({1.0, 0, 0.0, "slope 1 through the coarsest point (optimal: Hueber-Wohlmuth 2005, Drouet-Hild 2015)", "", true});
+  fig.slopes.push_back({0.25, 0, 0.0, "slope 1/4 through the coarsest point (Theorem 5.1: C (h1^{1/4} + h2))", "", true});
   mortar::write_figure(folder, "theorem_5_1", fig, run);
+}
+
+void plot_edge_pressure(const std::string& folder, const Options& o, const mortar::ExactContact& exact,
+                        const std::vector<LevelPressure>& levels, bool run) {
+  if (levels.empty()) return;
+  const std::size_t first = levels.size() >= 3 ? levels.size() - 3 : 0;
+  const double edge = o.L / 2 + hertz_exact_half_width(o.L);
+  const double h = std::max(levels[first].h1, levels[first].h2);  // the coarsest of the three
+  const double lo = edge - 6 * h, hi = edge + 3 * h;
+  Figure fig;
+  char title[200];
+  std::snprintf(title, sizeof title, "scene hertz-exact, %s matching, h2/h1 = %.4g: pressure at the right edge x = L/2 + a",
+                o.matching.c_str(), o.h_ratio);
+  fig.title = title;
+  fig.xlabel = "x along Gamma_c [m]";
+  fig.ylabel = o.matching == "integral" ? "contact pressure lambda_h [Pa]" : "nodal force / tributary length [Pa]";
+  fig.key = "outside below maxrows 2";
+  fig.height = 720;
+  Series truth{"exact p = p0 sqrt(1 - (x - L/2)^2 / a^2)", {}, {}, "lines", "lw 2 lc rgb '#000000'"};
+  for (int i = 0; i <= 2000; ++i) {
+    const double x = lo + (hi - lo) * i / 2000.0;
+    truth.x.push_back(x);
+    truth.y.push_back(exact.pressure(x));
+  }
+  fig.series.push_back(truth);
+  const char* styles[] = {"pt 7 ps 1.4 lw 2 lc rgb '#1f77b4'", "pt 5 ps 1.1 lw 2 lc rgb '#ff7f0e'",
+                          "pt 9 ps 1.0 lw 1.5 lc rgb '#d62728'"};
+  for (std::size_t k = first; k < levels.size(); ++k) {
+    char name[120];
+    std::snprintf(name, sizeof name, "h1 = %.4g m, h2 = %.4g m", levels[k].h1, levels[k].h2);
+    fig.series.push_back({name, levels[k].pressure.x, levels[k].pressure.value, "linespoints", styles[(k - first) % 3]});
+  }
+  keep_window(fig, lo, hi);
+  char arrow[160];
+  std::snprintf(arrow, sizeof arrow, "set arrow from %.12g, graph 0 to %.12g, graph 1 nohead dt 2 lc rgb '#7f7f7f'", edge, edge);
+  fig.settings.push_back(arrow);
+  fig.settings.push_back("set label 'x = L/2 + a' at first " + std::to_string(edge) + ", graph 0.95 left offset 0.5, 0");
+  fig.settings.push_back("set xzeroaxis lt -1");
+  mortar::write_figure(folder, "edge_pressure", fig, run);
 }
 
 void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable& table,

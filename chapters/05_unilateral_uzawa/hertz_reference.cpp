@@ -36,7 +36,7 @@ ZoneEdges edges_of(const mortar::ContactZone& z) {
   return {z.left_inactive, z.left_active, z.right_active, z.right_inactive};
 }
 
-mortar::ContactZone presolve_zone(const Options& o, const mortar::ManufacturedContact& exact, int cells) {
+mortar::ContactZone presolve_zone(const Options& o, const mortar::ExactContact& exact, int cells) {
   UnilateralSetup s = reference_setup(o);
   s.geometry.L = o.L;
   s.geometry.H1 = o.H1;
@@ -62,7 +62,7 @@ void measure_model_error(const Options& o, HertzReference& ref) {
 }
 
 // Both bodies on one graded x grid (matching traces), each graded towards Gamma_c in y.
-mortar::TwoBodies graded_bodies(const Options& o, const mortar::ManufacturedContact& exact,
+mortar::TwoBodies graded_bodies(const Options& o, const mortar::ExactContact& exact,
                                 const ZoneEdges& e, const ReferenceGrading& g) {
   // a cell size growing linearly with the distance d: cells grow geometrically, by 1 + growth
   const auto size = [&g](double d, double cap) { return std::min(cap, g.h_edge + g.growth * d); };
@@ -101,7 +101,7 @@ std::vector<double> values_at(const mortar::InterfaceCurve& c, const std::vector
 }
 }  // namespace
 
-UnilateralLevel solve_graded(const Options& o, const mortar::ManufacturedContact& exact,
+UnilateralLevel solve_graded(const Options& o, const mortar::ExactContact& exact,
                              const ZoneEdges& edges, const ReferenceGrading& g) {
   return solve_unilateral_level(graded_bodies(o, exact, edges, g), reference_setup(o), exact);
 }
@@ -159,7 +159,7 @@ double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::C
                   offset(level.right_active, level.right_inactive, reference.right_active, reference.right_inactive));
 }
 
-HertzReference make_hertz_reference(const Options& o, const mortar::ManufacturedContact& exact,
+HertzReference make_hertz_reference(const Options& o, const mortar::ExactContact& exact,
                                     const ReferenceGrading& grading) {
   const mortar::Stopwatch clock;
   HertzReference ref;

@@ -57,7 +57,7 @@ struct HertzReference {
   double model_half_width = 0;  // (a_ref - a) / a, signed
 };
 
-HertzReference make_hertz_reference(const Options& o, const mortar::ManufacturedContact& exact,
+HertzReference make_hertz_reference(const Options& o, const mortar::ExactContact& exact,
                                     const ReferenceGrading& grading);
 
 // How far the reference's contact edges lie outside the level's discrete bracket (outermost
@@ -70,7 +70,7 @@ HertzReference make_hertz_reference(const Options& o, const mortar::Manufactured
 double edge_offset_in_elements(const mortar::ContactZone& level, const mortar::ContactZone& reference, double h);
 
 // One solve on graded meshes whose h_edge windows cover the given edges.
-UnilateralLevel solve_graded(const Options& o, const mortar::ManufacturedContact& exact,
+UnilateralLevel solve_graded(const Options& o, const mortar::ExactContact& exact,
                              const ZoneEdges& edges, const ReferenceGrading& g);
 
 // ||p - q|| / ||q|| in L2(Gamma_c) for two P1 curves on different points: exact, on the union

@@ -9,10 +9,13 @@
 //   ch05_unilateral_uzawa --solver uzawa --acceleration none
 //   ch05_unilateral_uzawa --scene partial --matching pointwise
 //   ch05_unilateral_uzawa --scene bilateral                 # must agree with chapter 4
+//   ch05_unilateral_uzawa --scene hertz-exact --no-compare  # Theorem 5.1 on an exact Hertz solution
 #include <cstdio>
 #include <exception>
 #include <memory>
 
+#include "common/contact/exact_contact_check.hpp"
+#include "common/contact/manufactured_contact.hpp"
 #include "common/study/contact_plots.hpp"
 #include "figures.hpp"
 #include "common/study/timing_report.hpp"
@@ -28,10 +31,11 @@ int main(int argc, char** argv) {
                               "meshes: Uzawa and primal-dual active set, pointwise and integral matching.");
   chapter05::parse_options(parser, o, argc, argv);
   try {
-    // 2. Materials, the exact solution of the bilateral and signorini scenes, and what we
+    // 2. Materials, the exact solution of the bilateral, signorini and hertz-exact scenes, and what we
     //    measure against.
-    const mortar::ManufacturedContact exact = chapter05::make_exact(
+    const auto exact_solution = chapter05::make_exact(
         {o.scene, o.L, o.R, o.delta}, mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2));
+    const mortar::ExactContact& exact = *exact_solution;
     const chapter05::Reference ref = chapter05::make_reference(o, exact);
     const mortar::Matching matching = mortar::parse_matching(o.matching);
     const auto solver = chapter05::solver_options(o, o.solver, o.acceleration == "nesterov");
@@ -39,10 +43,12 @@ int main(int argc, char** argv) {
     // 3. Refine: one line per level for the chosen matching and solver.
     mortar::ConvergenceTable table;
     std::unique_ptr<chapter05::UnilateralLevel> coarsest, finest;  // kept for the pictures
+    std::vector<chapter05::LevelPressure> pressures;                // every level's, for the edge
     for (int level = 0; level < o.levels; ++level) {
       auto solved = std::make_unique<chapter05::UnilateralLevel>(
           chapter05::solve_unilateral_level(chapter05::level_setup(o, level, matching, solver), exact));
       table.add(chapter05::level_row(o, *solved, ref, exact));
+      pressures.push_back({solved->pressure, solved->h1, solved->h2});
       (level == 0 ? coarsest : finest) = std::move(solved);
     }
 
@@ -68,6 +74,18 @@ int main(int argc, char** argv) {
       for (const std::string key : {"err_energy", "err_l2", "err_pressure", "err_pressure_hminus", "err_pressure_best",
                                     "err_total_force"})
         results.set(key, table.column(key).back());
+    if (ref.kind == "exact") {
+      // the exact solution against the problem itself, without any solver (exact_contact_check.hpp)
+      results.set("exact_solution_check", mortar::check_exact_contact(exact, f.gap, o.L, o.H1, o.H2).worst());
+      results.set("active_set_changes", f.solution.active_set_changes);
+    }
+    if (o.scene == "hertz-exact") {
+      results.set("exact_half_width_m", chapter05::hertz_exact_half_width(o.L))
+          .set("half_width_error_m", chapter05::half_width_error(f, o.L))
+          .set("half_width_error_h", table.column("half_width_error_h").back())
+          .set("exact_total_force", exact.total_force(o.L))
+          .set("exact_max_pressure", exact.pressure(o.L / 2));
+    }
     if (o.scene == "signorini") {
       results.set("contact_point_m", chapter05::computed_contact_point(f))
           .set("exact_contact_point_m", mortar::signorini_contact_point(o.L))
@@ -90,6 +108,11 @@ int main(int argc, char** argv) {
                   f.zone.empty ? "no multiplier is active" : "no element has both ends in contact", f.h1);
     if (ref.kind == "hertz") chapter05::print_hertz_errors(o, table, f, *ref.hertz);
     if (ref.kind == "exact") table.print_local_rates();
+    if (o.scene == "hertz-exact")
+      std::printf("half-width: exact a = %.6f m, computed %.6f m (error %.3g m = %.2f h1), total force %.6g N/m "
+                  "(exact %.6g)\n", chapter05::hertz_exact_half_width(o.L), f.zone.half_width(),
+                  chapter05::half_width_error(f, o.L), table.column("half_width_error_h").back(), f.total_force,
+                  exact.total_force(o.L));
     if (o.scene == "signorini")
       std::printf("contact point: exact x* = %.6f m, computed %.6f m (error %.3g m, h1 = %.3g m)\n",
                   mortar::signorini_contact_point(o.L), chapter05::computed_contact_point(f),
@@ -114,7 +137,9 @@ int main(int argc, char** argv) {
     chapter05::plot_contact_state(o.out, f, run);
     if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, table, *ref.hertz, run);
     else chapter05::plot_errors(o.out, table, run);
-    if (o.scene == "signorini") chapter05::plot_theorem_5_1(o.out, table, o.matching, runs, run);
+    if (o.scene == "signorini" || o.scene == "hertz-exact")
+      chapter05::plot_theorem_5_1(o.out, o, table, runs, run);
+    if (o.scene == "hertz-exact") chapter05::plot_edge_pressure(o.out, o, exact, pressures, run);
     if (o.compare)
       chapter05::plot_solver_comparison(o.out, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);
 

@@ -6,16 +6,22 @@
 //    bodies touch on the left part only and separate on the right;
 //  - bilateral: chapter 4's exact solution, g = 0; the exact pressure is positive everywhere,
 //    so the unilateral answer must be the bilateral one;
-//  - signorini: an exact unilateral solution (common/contact/manufactured_contact.hpp): contact on
-//    (0, x*), separation on (x*, L), x* = L (1/2 + sqrt(2)/10) never a node; u prescribed on
-//    every outer side, g = A (x - x*)_+^2 / L. Theorem 5.1 is measured on it.
+//  - signorini: a smooth closure (common/contact/manufactured_contact.hpp): pressure on (0, x*),
+//    none on (x*, L), x* = L (1/2 + sqrt(2)/10) never a node; u prescribed on every outer side,
+//    g = A (x - x*)_+^2 / L. Its jump [u.n] is zero everywhere, so the same field also solves
+//    the glued problem: bilateral in disguise;
+//  - hertz-exact: each body a piece of an elastic half-plane under the Hertz pressure
+//    (common/contact/hertz_half_planes.hpp), half-width a = L sqrt(2) / 6 (never a node),
+//    centre L/2, u prescribed on every outer side, no body force, g = (x - L/2)^2 / (2R): an
+//    exact solution with true contact edges. Theorem 5.1 is measured on it.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "common/contact/contact_scenes.hpp"
-#include "common/contact/manufactured_contact.hpp"
+#include "common/contact/exact_contact.hpp"
 
 namespace chapter05 {
 
@@ -29,12 +35,16 @@ struct UnilateralScene {
   std::function<double(double)> gap;
 };
 
-// The exact solution a scene is measured against: the signorini profile for "signorini",
-// chapter 4's sloped profile otherwise (used by the bilateral scene only).
-mortar::ManufacturedContact make_exact(const SceneParameters& s, const mortar::Material& body1,
-                                       const mortar::Material& body2);
+// The exact solution a scene is measured against: the half-planes for "hertz-exact", the
+// signorini profile for "signorini", chapter 4's sloped profile otherwise (used by the
+// bilateral scene only; the others read just the two materials from it).
+std::unique_ptr<const mortar::ExactContact> make_exact(const SceneParameters& s, const mortar::Material& body1,
+                                                       const mortar::Material& body2);
+// The half-width of the hertz-exact scene's contact zone, L sqrt(2) / 6: irrational, so no
+// mesh with nodes at rational multiples of L has a node on an edge of the zone.
+double hertz_exact_half_width(double L);
 
 UnilateralScene make_scene(const SceneParameters& s, const mortar::TwoBodies& bodies,
-                           const mortar::ManufacturedContact& exact);
+                           const mortar::ExactContact& exact);
 
 }  // namespace chapter05

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 
+#include "common/contact/manufactured_contact.hpp"
 #include "common/linalg/memory_estimate.hpp"
 #include "common/interface/pressure_norms.hpp"
 #include "common/fem/quadrature.hpp"
@@ -36,17 +37,6 @@ std::function<double(double)> as_function(const mortar::InterfaceCurve& c) {
 
 double relative(double error, double norm) { return norm > 0 ? error / norm : 0.0; }
 
-// int_{Gamma_c} p, by 8-point Gauss on 64 pieces (p has a C^2 point at x* in the signorini scene)
-double exact_total_force(const mortar::ManufacturedContact& exact, double L) {
-  const mortar::SegmentRule g = mortar::gauss_legendre(8);
-  const int pieces = 64;
-  double total = 0;
-  for (int e = 0; e < pieces; ++e)
-    for (std::size_t q = 0; q < g.points.size(); ++q)
-      total += g.weights[q] * L / pieces * exact.pressure(L * (e + g.points[q]) / pieces);
-  return total;
-}
-
 // Where x falls in the element of the sorted points that holds it: 0 at its left node, 1 at
 // its right one (the Hertz scene: where the reference's left contact edge cuts the mesh).
 double edge_in_element(const std::vector<double>& nodes, double x) {
@@ -66,11 +56,17 @@ double contact_point_error(const UnilateralLevel& r, double L) {
   return std::fabs(computed_contact_point(r) - mortar::signorini_contact_point(L));
 }
 
+double half_width_error(const UnilateralLevel& r, double L) {
+  return r.zone.empty ? std::numeric_limits<double>::quiet_NaN()
+                      : std::fabs(r.zone.half_width() - hertz_exact_half_width(L));
+}
+
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
   using mortar::Range;
-  parser.add_choice("scene", o.scene, {"hertz", "partial", "bilateral", "signorini"}, "contact scene");
+  parser.add_choice("scene", o.scene, {"hertz", "hertz-exact", "partial", "bilateral", "signorini"}, "contact scene");
   parser.add_choice("matching", o.matching, {"integral", "pointwise"}, "how the bodies are matched on Gamma_c");
-  parser.add_choice("solver", o.solver, {"pdas", "uzawa"}, "contact solver");
+  parser.add_choice("solver", o.solver, {"pdas", "uzawa", "dual-newton"},
+                    "contact solver (dual-newton: chapter 6's dual basis and semismooth Newton method, integral matching)");
   parser.add_choice("acceleration", o.acceleration, {"nesterov", "none"}, "Uzawa step: with Nesterov's momentum, or plain projected gradient");
   parser.add_choice("uzawa-step", o.uzawa_step, {"both-ends", "one-over-norm"},
                     "plain Uzawa with --rho 0: rho = 2 / (lambda_max + lambda_min(S_AA)) once the active set "
@@ -78,12 +74,13 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = automatic: 1 / ||B K^-1 B^T|| (power iteration), "
                     "for plain Uzawa then 2 / (lambda_max + lambda_min) of the active block", Range::closed(0, 1e300));
   parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
-  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8 unless given)",
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8, hertz-exact: 4 unless given)",
                  Range::closed(2, 1 << 14));
-  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3; signorini: 6 unless given)",
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3; signorini: 6, hertz-exact: 7 unless given)",
                  Range::closed(3, 10));
   mortar::add_two_body_options(parser, o);
-  parser.add_double("R", o.R, "radius of the Hertz gap (x - L/2)^2 / (2R) [m]", Range::closed(1e-6, 1e12));
+  parser.add_double("R", o.R, "radius of the Hertz gap (x - L/2)^2 / (2R) [m] (hertz-exact: sets p0 = a E* / (2R))",
+                    Range::closed(1e-6, 1e12));
   parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", Range::closed(-1e6, 1e6));
   parser.add_flag("no-compare", o.no_compare, "skip the comparison of every solver on both matchings");
   parser.add_string("out", o.out, "output folder");
@@ -94,11 +91,13 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.parse(argc, argv);
   mortar::set_solver_threads(o.threads);
   o.compare = !o.no_compare;
-  // the signorini scene measures local rates, which need more levels, each one cheaper
-  if (o.scene == "signorini") {
-    if (!parser.given("n0")) o.n0 = 8;
-    if (!parser.given("levels")) o.levels = 6;
+  // the exact scenes measure local rates, which need more levels, each one cheaper
+  if (o.scene == "signorini" || o.scene == "hertz-exact") {
+    if (!parser.given("n0")) o.n0 = o.scene == "signorini" ? 8 : 4;
+    if (!parser.given("levels")) o.levels = o.scene == "signorini" ? 6 : 7;
   }
+  if (o.solver == "dual-newton" && o.matching != "integral")
+    parser.fail("solver", "dual-newton is chapter 6's method on the dual basis of M_h^1: integral matching only");
   parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 3}});  // after the scene's defaults
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
   // small displacements: the imposed one must be small against the body it compresses
@@ -139,7 +138,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
 
 mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver, bool accelerate) {
   mortar::ContactSolverOptions s;
-  s.kind = mortar::parse_contact_solver(solver);
+  s.kind = mortar::parse_contact_solver(solver == "dual-newton" ? "pdas" : solver);
   s.accelerate = accelerate;
   s.tol = o.tol;
   s.rho = o.rho;
@@ -155,16 +154,17 @@ UnilateralSetup level_setup(const Options& o, int level, mortar::Matching matchi
   s.nonmortar = o.nonmortar - 1;
   s.solver = solver;
   s.scene = {o.scene, o.L, o.R, o.delta};
+  s.dual_newton = o.solver == "dual-newton";
   return s;
 }
 
-Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact) {
+Reference make_reference(const Options& o, const mortar::ExactContact& exact) {
   Reference ref;
   if (o.scene == "hertz") {
     ref.kind = "hertz";
     ref.hertz = std::make_shared<const HertzReference>(make_hertz_reference(o, exact, reference_grading(o)));
   }
-  if (o.scene == "bilateral" || o.scene == "signorini") ref.kind = "exact";
+  if (o.scene == "bilateral" || o.scene == "signorini" || o.scene == "hertz-exact") ref.kind = "exact";
   if (o.scene == "partial") {
     ref.kind = "finer mesh";
     // two levels beyond the finest, integral matching, active set: the best we can afford
@@ -179,7 +179,7 @@ Hertz hertz_for(const Options& o, const UnilateralLevel& r) {
 }
 
 mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
-                      const mortar::ManufacturedContact& exact) {
+                      const mortar::ExactContact& exact) {
   mortar::Row row = {{"h", std::max(r.h1, r.h2)},
                      {"h1", r.h1},
                      {"h2", r.h2},
@@ -221,7 +221,8 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     for (int l = 0; l < 2; ++l)
       norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(r.u, l), exact.exact(l));
     const auto p = [&](double x) { return exact.pressure(x); };
-    const auto c = [&](double x) { return exact.normal_displacement(x); };
+    const auto jump = [&](double x) { return exact.normal_jump(x); };
+    const auto u1_y = [&](double x) { return exact.u(0, {x, 0.0}).y(); };
     // the multiplier in its own norms (common/interface/pressure_norms.hpp): L2, the mesh-dependent
     // H^{-1/2} norm, and the L2 best approximation in M_h^1 beside them
     const mortar::PressureErrors pe = mortar::pressure_errors(r.gamma, r.pressure, p);
@@ -230,10 +231,19 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     row.push_back({"err_pressure", relative(pe.l2, pe.norm_l2)});
     row.push_back({"err_pressure_hminus", relative(pe.hminus, pe.norm_hminus)});
     row.push_back({"err_pressure_best", relative(pe.best_l2, pe.norm_l2)});
-    row.push_back({"err_jump", relative(mortar::l2_error(r.jump, [](double) { return 0.0; }), mortar::l2_norm(r.jump, c))});
-    const double force = exact_total_force(exact, o.L);
+    // the jump against the exact one, relative to the normal displacement of body 1 on Gamma_c
+    row.push_back({"err_jump", relative(mortar::l2_error(r.jump, jump), mortar::l2_norm(r.jump, u1_y))});
+    const double force = exact.total_force(o.L);
     row.push_back({"err_total_force", relative(std::fabs(r.total_force - force), force)});
     if (o.scene == "signorini") row.push_back({"err_contact_point", contact_point_error(r, o.L)});
+    if (o.scene == "hertz-exact") {
+      // the half-width in metres and in elements of the non-mortar side (a rate of it means
+      // nothing: it depends on where the edges fall between two nodes)
+      const double error = half_width_error(r, o.L);
+      row.push_back({"half_width_error_m", error});
+      row.push_back({"half_width_error_h", error / r.gamma.nonmortar_trace.max_element_length()});
+    }
+    row.push_back({"active_set_changes", static_cast<double>(r.solution.active_set_changes)});
   } else {
     const auto p = as_function(ref.finer->pressure);
     row.push_back({"err_pressure", relative(mortar::l2_error(r.pressure, p), mortar::l2_norm(r.pressure, p))});
@@ -242,7 +252,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
   return row;
 }
 
-std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ManufacturedContact& exact,
+std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ExactContact& exact,
                                        const Reference& ref,
                                        std::vector<std::unique_ptr<UnilateralLevel>>& finest_by_matching) {
   struct Variant {

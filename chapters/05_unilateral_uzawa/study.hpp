@@ -26,7 +26,7 @@ struct Options : mortar::TwoBodyOptions {
   std::string acceleration = "nesterov";
   std::string uzawa_step = "both-ends";
   double rho = 0, tol = 1e-8;
-  int n0 = 12, levels = 5;  // signorini: 8 and 6 unless given (parse_options)
+  int n0 = 12, levels = 5;  // signorini: 8 and 6, hertz-exact: 4 and 7 unless given (parse_options)
   int threads = mortar::default_solver_threads();
   double R = 1, delta = 0.02;
   bool no_compare = false, compare = true;
@@ -52,15 +52,17 @@ struct Reference {
   std::unique_ptr<UnilateralLevel> finer;
   std::shared_ptr<const HertzReference> hertz;
 };
-Reference make_reference(const Options& o, const mortar::ManufacturedContact& exact);
+Reference make_reference(const Options& o, const mortar::ExactContact& exact);
 
 mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Reference& ref,
-                      const mortar::ManufacturedContact& exact);
+                      const mortar::ExactContact& exact);
 Hertz hertz_for(const Options& o, const UnilateralLevel& r);
 // Signorini scene: x*_h, the right edge of the discrete contact zone (the midpoint between its
 // last active node and the next node), and |x*_h - x*|; NaN when nothing touches.
 double computed_contact_point(const UnilateralLevel& r);
 double contact_point_error(const UnilateralLevel& r, double L);
+// hertz-exact scene: |a_h - a| in metres, a_h = ContactZone::half_width (NaN when nothing touches)
+double half_width_error(const UnilateralLevel& r, double L);
 
 // One line of solvers.csv: a (matching, solver) pair on one level.
 struct SolverRun {
@@ -69,7 +71,7 @@ struct SolverRun {
   double h = 0, time_s = 0, limit_s = 0, error = 0, total_force = 0;
   int iterations = 0, columns = 0;
 };
-std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ManufacturedContact& exact,
+std::vector<SolverRun> compare_solvers(const Options& o, const mortar::ExactContact& exact,
                                        const Reference& ref,
                                        std::vector<std::unique_ptr<UnilateralLevel>>& finest_by_matching);
 void write_solver_runs(const std::string& path, const std::vector<SolverRun>& runs);

@@ -29,13 +29,13 @@ void measure_penetration(UnilateralLevel& r) {
 }  // namespace
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
-                                       const mortar::ManufacturedContact& exact) {
+                                       const mortar::ExactContact& exact) {
   return solve_unilateral_level(mortar::make_two_bodies(setup.geometry, exact.material(0), exact.material(1)),
                                 setup, exact);
 }
 
 UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const UnilateralSetup& setup,
-                                       const mortar::ManufacturedContact& exact) {
+                                       const mortar::ExactContact& exact) {
   UnilateralLevel r{std::move(bodies), {}, {}, {}, {}, {}, {}, {}, {}};
   std::optional<UnilateralScene> scene;
   // Steps 1-7, timed: everything but the mesh.
@@ -82,6 +82,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
       r.solution.lambda = x.lambda;
       r.solution.iterations = x.iterations;
       r.solution.residual = x.residual;
+      r.solution.active_set_changes = x.active_set_changes;
     } else {
       mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
       problem.K.swap(reduced.K);

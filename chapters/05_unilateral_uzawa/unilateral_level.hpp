@@ -44,9 +44,9 @@ struct UnilateralLevel {
 };
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
-                                       const mortar::ManufacturedContact& exact);
+                                       const mortar::ExactContact& exact);
 // The same on bodies meshed by the caller (setup.geometry is then not used): graded meshes.
 UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const UnilateralSetup& setup,
-                                       const mortar::ManufacturedContact& exact);
+                                       const mortar::ExactContact& exact);
 
 }  // namespace chapter05

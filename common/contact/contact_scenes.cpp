@@ -45,8 +45,10 @@ SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ExactConta
   scene.F = Eigen::VectorXd::Zero(bodies.num_dofs());
   for (int l = 0; l < 2; ++l) {
     const Mesh& mesh = bodies.body(l).mesh;
-    const Eigen::VectorXd F = body_force_vector(
-        mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4);
+    const Eigen::VectorXd F =
+        exact.has_body_force()
+            ? body_force_vector(mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4)
+            : Eigen::VectorXd::Zero(mesh.num_dofs());
     DirichletData d;
     prescribe_on_sides(d, mesh, {l == 0 ? Side::top : Side::bottom, Side::left, Side::right},
                        [&](const Eigen::Vector2d& p) { return exact.u(l, p); });

@@ -21,7 +21,7 @@ SceneData manufactured_scene(const TwoBodies& bodies, const ExactContact& exact)
 
 // The same solution with u prescribed on every outer side (top, left and right of body 1;
 // bottom, left and right of body 2): no side is free, so no corner mixes a support with a
-// free edge, and the exact solution is the only solution (chapter 5's signorini scene).
+// free edge, and the exact solution is the only solution (chapter 5's signorini and hertz-exact scenes).
 SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ExactContact& exact);
 
 // The patch test: a uniform pressure p on the top of body 1, rollers under body 2 (u_y = 0)

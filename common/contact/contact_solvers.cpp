@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -404,8 +405,12 @@ ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_no
     // S is not an M-matrix (a stiff body on a soft one makes that plain), so the update can
     // return to an active set it has seen: it would cycle for ever. The dual active-set method
     // cannot, and starts from this iterate made feasible.
+    std::vector<int> moved;  // both sets are sorted
+    std::set_symmetric_difference(active.begin(), active.end(), next.begin(), next.end(), std::back_inserter(moved));
+    sol.active_set_changes += static_cast<int>(moved.size());
     if (!visited.insert(next).second) {
       ContactSolution exact = dual_active_set(S, o, sc, lambda.cwiseMax(0.0), k);
+      exact.active_set_changes = sol.active_set_changes;
       exact.cycled_at = k;
       return exact;
     }

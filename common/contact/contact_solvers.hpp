@@ -64,6 +64,7 @@ struct ContactSolution {
   bool step_fell_back = false;  // plain Uzawa: the dual energy rose and rho went back to 1 / ||S||
   int cycled_at = 0;       // pdas: the iteration that met an active set again (0: none), after
                            // which the dual active-set method finished the solve
+  int active_set_changes = 0;  // pdas: rows that entered or left the active set, over all steps
 };
 
 // The complementarity residual, dimensionless:

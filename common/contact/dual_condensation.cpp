@@ -189,6 +189,7 @@ DualContactSolution solve_dual_contact(CondensedContact& c, const DualContactOpt
     std::vector<bool> next(static_cast<std::size_t>(m));
     for (int i = 0; i < m; ++i) next[i] = sol.lambda[i] + diagonal[i] * sol.w[i] > 0;
     if (next == sol.active) break;
+    for (int i = 0; i < m; ++i) sol.active_set_changes += next[i] != sol.active[i];
     if (step == o.max_iterations)
       throw std::runtime_error("semismooth Newton: the active set still changed after " + std::to_string(step) +
                                " steps");

@@ -61,6 +61,7 @@ struct DualContactSolution {
   int iterations = 0;            // solves (each one numerical factorization)
   double residual = 0;           // complementarity residual (contact_solvers.hpp) at the end
   std::vector<int> active_sizes;  // |A| of each step
+  int active_set_changes = 0;     // rows that entered or left A, over all steps
 };
 
 // Throws std::runtime_error when the active set has not settled within max_iterations.

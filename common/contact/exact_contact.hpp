@@ -24,6 +24,7 @@ class ExactContact {
   virtual Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const = 0;
   virtual Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const = 0;  // d u_i / d x_j
   virtual Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const = 0;  // f = -div sigma
+  virtual bool has_body_force() const { return true; }  // false: f = 0, no load to integrate
   virtual double pressure(double x) const = 0;  // p = -sigma_N on Gamma_c
   // int_0^L p: 8-point Gauss on 64 pieces unless a kind knows it in closed form
   virtual double total_force(double L) const;

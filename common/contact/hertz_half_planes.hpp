@@ -38,6 +38,7 @@ class HertzHalfPlanes : public ExactContact {
   Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const override;
   Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const override;
   Eigen::Vector2d body_force(int, const Eigen::Vector2d&) const override { return Eigen::Vector2d::Zero(); }
+  bool has_body_force() const override { return false; }
   double pressure(double x) const override;
   double total_force(double) const override;  // pi a p0 / 2, whatever the length of Gamma_c
 

@@ -90,14 +90,14 @@ void fix_creation_date(const std::filesystem::path& pdf) {
   std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// C with C x_min^p = (1 - offset) y(x_min) at the anchor series' smallest x
+// C with C x0^p = (1 - offset) y(x0) at the anchor series' smallest x (or largest: at_coarsest)
 std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size_t k) {
   if (r.anchor < 0 || r.anchor >= static_cast<int>(fig.series.size()))
     throw std::invalid_argument("reference slope anchored to a missing series");
   const auto& s = fig.series[r.anchor];
   double x0 = std::numeric_limits<double>::infinity(), y0 = 0;
   for (std::size_t i = 0; i < s.x.size(); ++i)
-    if (s.x[i] > 0 && s.x[i] < x0 && s.y[i] > 0) {
+    if (s.x[i] > 0 && s.y[i] > 0 && (!std::isfinite(x0) || (r.at_coarsest ? s.x[i] > x0 : s.x[i] < x0))) {
       x0 = s.x[i];
       y0 = s.y[i];
     }

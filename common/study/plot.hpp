@@ -22,13 +22,15 @@ struct Series {
 };
 
 // A dashed line C h^slope through the finest (smallest x) point of series `anchor`, shifted
-// down by `offset` so it does not hide the data.
+// down by `offset` so it does not hide the data; or, with `at_coarsest`, through its coarsest
+// (largest x) point: a bound drawn there cannot sit above the finer measurements by construction.
 struct ReferenceSlope {
   double slope = 1;
   int anchor = 0;
   double offset = 0.5;
   std::string label;  // default "slope p"
   std::string style;  // gnuplot line style; default reference_slope_style(its place in the list)
+  bool at_coarsest = false;
 };
 
 // The k-th reference slope's line: its own colour and dash pattern, unlike every other
