@@ -84,13 +84,15 @@ configure() {
 # Further scenes shown in the lecture notes: "program|folder under figures/program|options|label"
 # Chapter 3 at h2/h1 = 1/3, where Theorem 4.1's h^{1/2} shows (about 45 s, 1.5M dofs at the end).
 # Chapter 1's square-root edge over 12 levels (about 25 s).
-# Chapter 5's exact unilateral solution, Theorem 5.1 measured (about 100 s with the solver comparison).
+# Chapter 5's smooth closure (the signorini scene, about 100 s with the solver comparison) and its
+# exact Hertz solution, Theorem 5.1 measured at true contact edges (about 75 s with the comparison).
 # Chapter 7 with pointwise matching: Theorem 4.1's h^{1/2} with P2, beside P1 (about 25 s).
 extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
             "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
             "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"
             "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare|chapter 5, scene bilateral"
             "ch05_unilateral_uzawa|signorini|--scene signorini|chapter 5, scene signorini"
+            "ch05_unilateral_uzawa|hertz_exact|--scene hertz-exact|chapter 5, scene hertz-exact"
             "ch07_quadratic_elements|pointwise|--matching pointwise|chapter 7, pointwise matching")
 
 # run_program PROGRAM RESULTS FIGURES [OPTIONS...]: the full output stays in RESULTS; the

@@ -16,6 +16,7 @@ namespace {
 // What each error column measures, in words (gnuplot would read "_" as a subscript).
 std::string describe(const std::string& column) {
   if (column == "err_energy") return "u, broken energy norm";
+  if (column == "err_energy_interpolant") return "nodal interpolant of the exact u, energy norm";
   if (column == "err_l2") return "u, L^2";
   if (column == "err_pressure") return "pressure, L^2(Gamma_c)";
   if (column == "err_jump") return "jump [u.n], L^2(Gamma_c)";
