@@ -169,6 +169,7 @@ TEST(ExactContactCheck, passes_the_signorini_and_bilateral_solutions_of_chapter_
   EXPECT_LT(check_exact_contact(signorini, [](double) { return 0.0; }, 1, 1, 1).worst(), 1e-10);
   const HertzHalfPlanes h(m1, m2, x0, a, R);
   const ExactContactResiduals glued = check_exact_contact(h, [](double) { return 0.0; }, 1, 1, 1);
+  print("hertz, no gap", glued);
   EXPECT_GT(glued.closed_gap, 1e-3);  // [u.n] = X^2 / (2R) in the zone, not 0
   EXPECT_GT(glued.penetration, 1e-3);  // and beyond it the bodies would overlap
 }
