@@ -61,7 +61,7 @@ Hertz hertz_for(const Options& o, const UnilateralLevel& r);
 // last active node and the next node), and |x*_h - x*|; NaN when nothing touches.
 double computed_contact_point(const UnilateralLevel& r);
 double contact_point_error(const UnilateralLevel& r, double L);
-// hertz-exact scene: |a_h - a| in metres, a_h = ContactZone::half_width (NaN when nothing touches)
+// hertz-exact scene: |a_h - a| in metres, a_h = ContactZone::half_width (0 when nothing touches)
 double half_width_error(const UnilateralLevel& r, double L);
 
 // One line of solvers.csv: a (matching, solver) pair on one level.
