@@ -351,8 +351,8 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
       limit.y.push_back(std::max(r.error, 1e-16));
     }
   timing.series.push_back(limit);
-  // Only the 1/h of plain Uzawa is drawn; Nesterov's measured exponent (0.6 over five levels,
-  // not settled) has no reference line to be compared with.
+  // Only the 1/h of plain Uzawa is drawn; Nesterov's measured exponents (0.91 and 0.73 over the
+  // five Hertz levels, not settled) have no theory to draw a line from.
   iterations.slopes.push_back({-1.0, 2, 0.0, "slope -1 (1/h)", ""});
   mortar::write_figure(folder, "iterations", iterations, run);
   mortar::write_figure(folder, "error_vs_time", timing, run);
