@@ -261,3 +261,26 @@ TEST(ContactSolvers, pdas_converges_for_stiffness_ratios_from_1e_8_to_1e8) {
   // the plain update cycles for some of these (measured: integral 1e-8), so the way out is tested
   EXPECT_GT(cycled, 0);
 }
+
+// The active-set rules are strict: a row that would neither penetrate nor open (b_i = 0,
+// lambda_i = 0, gap exactly 0) stays inactive and the method ends after one step, with no row
+// moved. A ">= 0" in either rule would make it enter the set and take a second step.
+// K = diag(2, 1), f = (1, 0), B = [[0, 1], [1, 0]], G = (0, 1/2): the unconstrained u = (1/2, 0)
+// touches row 1 (gap 0) and sits exactly on row 0's limit (u_y = 0 = G_0).
+TEST(ContactSolvers, pdas_leaves_a_row_with_zero_gap_and_zero_force_inactive_in_one_step) {
+  ContactProblem p;
+  p.K.resize(2, 2);
+  p.K.insert(0, 0) = 2;
+  p.K.insert(1, 1) = 1;
+  p.f = Eigen::Vector2d(1, 0);
+  p.B.resize(2, 2);
+  p.B.insert(0, 1) = 1;
+  p.B.insert(1, 0) = 1;
+  p.G = Eigen::Vector2d(0, 0.5);
+  const ContactSolution s = solve_contact(p, with(ContactSolverKind::pdas));
+  EXPECT_EQ(s.iterations, 1);
+  EXPECT_EQ(s.active_set_changes, 0);
+  EXPECT_EQ(s.lambda.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_NEAR(s.u[0], 0.5, 1e-15);
+  EXPECT_EQ(s.residual, 0.0);
+}

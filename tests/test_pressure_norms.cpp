@@ -204,3 +204,19 @@ TEST(PressureNorms, every_norm_scales_with_the_pressure_from_1e_minus300_to_1e30
       EXPECT_NEAR(e.*member / scale, unit.*member, 1e-12 * unit.*member) << "scale " << scale;
   }
 }
+
+// Values by hand: p(x) = x on four elements of [0, 1], p_h its interpolant in M_h^1 (exact on the
+// interior elements, the constants 1/4 and 3/4 on the end ones). The error lives on the end
+// elements: int_0^{1/4} (x - 1/4)^2 = 1/192 on each, so L2 = (1/96)^{1/2} and the
+// mesh-dependent norm (h / 96)^{1/2}.
+TEST(PressureNorms, interpolant_of_a_linear_pressure_has_the_norms_computed_by_hand) {
+  const ContactInterface g = interface_of(4);
+  const auto p = [](double x) { return x; };
+  const PressureErrors e = pressure_errors(g, interpolant(g, p), p);
+  EXPECT_NEAR(e.l2, std::sqrt(1.0 / 96), 1e-14);
+  EXPECT_NEAR(e.l2_ends, std::sqrt(1.0 / 96), 1e-14);
+  EXPECT_NEAR(e.l2_interior, 0.0, 1e-14);
+  EXPECT_NEAR(e.hminus, std::sqrt(0.25 / 96), 1e-14);
+  EXPECT_NEAR(e.norm_l2, std::sqrt(1.0 / 3), 1e-14);
+  EXPECT_LE(e.best_l2, e.l2);
+}

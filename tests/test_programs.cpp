@@ -432,6 +432,30 @@ TEST(Programs, ch05_hertz_exact_errors_do_not_depend_on_the_unit_of_length) {
   }
 }
 
+// The column h of convergence.csv, which every rate uses, is max(h1, h2): h1 when body 2 is the
+// finer (h2/h1 = 1/3), h2 when it is the coarser (3/2). A rate at a fixed ratio is blind to
+// which one is written, so the column itself is checked.
+TEST(Programs, convergence_tables_give_h_as_the_larger_of_h1_and_h2) {
+  const std::vector<std::pair<std::string, std::string>> programs = {
+      {CH03, ""}, {CH04, ""}, {CH05, " --no-compare"}, {CH06, " --no-compare --no-hertz"}, {CH07, " --no-p1"}};
+  for (const auto& [program, skip] : programs)
+    for (const std::string ratio : {"1/3", "3/2"}) {
+      const std::string dir = out_dir("h_column");
+      const ProgramRun r = run(program + skip + " --quick --no-plot --h-ratio " + ratio + " --out " + dir);
+      ASSERT_EQ(r.status, 0) << program << "\n" << r.output;
+      const auto h = csv_column(dir + "/convergence.csv", "h"), h1 = csv_column(dir + "/convergence.csv", "h1"),
+                 h2 = csv_column(dir + "/convergence.csv", "h2");
+      ASSERT_EQ(h.size(), 3u) << program;
+      ASSERT_EQ(h1.size(), h.size()) << program;
+      ASSERT_EQ(h2.size(), h.size()) << program;
+      for (std::size_t k = 0; k < h.size(); ++k) {
+        EXPECT_EQ(h[k], std::max(h1[k], h2[k])) << program << " at h2/h1 = " << ratio << ", level " << k;
+        EXPECT_NE(h1[k], h2[k]) << program;
+      }
+      std::filesystem::remove_all(dir);
+    }
+}
+
 // Chapter 6's dual basis inside chapter 5 (--solver dual-newton): integral matching only, and on
 // hertz-exact the same energy error as the standard basis to within 2% (measured 0.5% at n1 = 64).
 TEST(Programs, ch05_dual_newton_solver_is_integral_only_and_agrees_with_the_standard_basis) {
