@@ -130,6 +130,39 @@ TEST_F(OptionsDeathTest, a_refused_out_folder_leaves_nothing_behind) {
   EXPECT_FALSE(std::filesystem::exists(base));
 }
 
+// A refused --out touches only what this call created: a dangling symbolic link, or a link to
+// itself, given as the folder stays where the user put it.
+TEST_F(OptionsDeathTest, a_refused_out_keeps_the_users_dangling_or_looping_link) {
+  const std::filesystem::path base = std::filesystem::temp_directory_path() / "options_links";
+  std::filesystem::remove_all(base);
+  std::filesystem::create_directories(base);
+  std::filesystem::create_symlink(base / "nowhere" / "at_all", base / "dangling");
+  std::filesystem::create_symlink(base / "loop", base / "loop");
+  for (const std::filesystem::path link : {base / "dangling", base / "loop" / "sub"}) {
+    OptionParser p("demo", "a demo");
+    EXPECT_EXIT(prepare_output_folder(p, link.string()), ::testing::ExitedWithCode(2), ::testing::HasSubstr("--out"));
+  }
+  EXPECT_TRUE(std::filesystem::is_symlink(base / "dangling"));
+  EXPECT_TRUE(std::filesystem::is_symlink(base / "loop"));
+  std::filesystem::remove_all(base);
+}
+
+// A file of the user's named like the write probe survives the probe.
+TEST(Options, preparing_the_output_folder_keeps_a_file_named_like_its_probe) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "options_probe_name";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / ".write_probe") << "mine";
+  OptionParser p("demo", "a demo");
+  prepare_output_folder(p, folder.string());
+  std::ifstream kept(folder / ".write_probe");
+  std::string content;
+  kept >> content;
+  EXPECT_EQ(content, "mine");
+  EXPECT_FALSE(std::filesystem::exists(folder / ".write_probe.1"));  // the probe is gone
+  std::filesystem::remove_all(folder);
+}
+
 TEST(Options, preparing_the_output_folder_removes_the_previous_results) {
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / "options_stale_results";
   std::filesystem::create_directories(folder);

@@ -226,8 +226,13 @@ void prepare_output_folder(const OptionParser& parser, const std::string& folder
   std::error_code ec;
   // The topmost folder this call creates: removed again if the folder turns out unusable, so
   // that a refused --out leaves nothing behind.
+  // A path counts as new only when nothing is there, not even a link: a dangling symbolic link
+  // or a loop of links is the user's, and stays (exists() would follow it and say false).
   fs::path first_new;
-  for (fs::path p = fs::absolute(folder, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+  const auto nothing_at = [&](const fs::path& p) {
+    return fs::symlink_status(p, ec).type() == fs::file_type::not_found;
+  };
+  for (fs::path p = fs::absolute(folder, ec); !p.empty() && nothing_at(p); p = p.parent_path()) {
     first_new = p;
     if (p == p.parent_path()) break;
   }
@@ -238,7 +243,9 @@ void prepare_output_folder(const OptionParser& parser, const std::string& folder
   fs::create_directories(folder, ec);
   if (ec) refuse("cannot create folder '" + folder + "': " + ec.message());
   if (!fs::is_directory(folder)) refuse("'" + folder + "' is not a folder");
-  const fs::path probe = fs::path(folder) / ".write_probe";
+  // The write probe gets a name no file in the folder has, so that only this call's file is removed.
+  fs::path probe = fs::path(folder) / ".write_probe";
+  for (int k = 1; !nothing_at(probe); ++k) probe = fs::path(folder) / (".write_probe." + std::to_string(k));
   {
     std::ofstream f(probe);
     if (!f) refuse("folder '" + folder + "' is not writable");
