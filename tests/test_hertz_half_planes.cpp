@@ -27,18 +27,26 @@ const Pair pairs[] = {{1, 0.3, 1, 0.3}, {1, 0.3, 3, 0.25}, {1e6, 0.2, 1, 0.45}, 
 HertzHalfPlanes hertz(const Pair& c) { return {Material(c.E1, c.nu1), Material(c.E2, c.nu2), x0, a, R}; }
 
 void print(const char* what, const ExactContactResiduals& r) {
-  std::printf("%s: gradient %.2e, equilibrium %.2e, traction %.2e, sign %.2e, closed gap %.2e, penetration %.2e\n",
-              what, r.gradient, r.equilibrium, r.traction, r.sign, r.closed_gap, r.penetration);
+  std::printf("%s: gradient %.2e, equilibrium %.2e, boundary %.2e, traction %.2e, sign %.2e, closed gap %.2e, "
+              "penetration %.2e\n", what, r.gradient, r.equilibrium, r.boundary, r.traction, r.sign, r.closed_gap,
+              r.penetration);
 }
 
 // The same field with one ingredient changed by a relative 1e-6: what the check must see.
 class Perturbed : public ExactContact {
  public:
-  enum class What { pressure, dirichlet_data, field };
+  enum class What { pressure, dirichlet_data, field, body1_data, edge_branch };
   Perturbed(const HertzHalfPlanes& h, What w) : ExactContact(h.material(0), h.material(1)), h_(h), w_(w) {}
   Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const override {
-    if (w_ == What::pressure) return h_.u(l, p);
-    return h_.u(l, p) + eps_u() * Eigen::Vector2d(p.x() * p.x(), 0.0);  // not an elastic field
+    const Eigen::Vector2d u = h_.u(l, p);
+    switch (w_) {
+      case What::pressure: return u;
+      case What::body1_data:  // body 1 only, by 1e-4 of its own size
+        return l == 0 ? Eigen::Vector2d(u + 1e-4 * h_.u(0, {0.0, 0.0}).norm() * Eigen::Vector2d(p.x() * p.x(), 0.0)) : u;
+      case What::edge_branch:  // a wrong branch of the logarithm on Gamma_c left of the zone
+        return p.y() == 0 && p.x() < h_.centre() - h_.half_width() ? Eigen::Vector2d(u + 1e-6 * Eigen::Vector2d(u.norm(), 0)) : u;
+      default: return u + eps_u() * Eigen::Vector2d(p.x() * p.x(), 0.0);  // not an elastic field
+    }
   }
   Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const override {
     Eigen::Matrix2d G = h_.grad_u(l, p);
@@ -103,6 +111,27 @@ TEST(HertzHalfPlanes, check_fails_when_the_gap_the_pressure_or_the_dirichlet_dat
   EXPECT_GT(pressure.traction, 1e-7);
   EXPECT_GT(data.gradient, 1e-8);
   EXPECT_GT(field.equilibrium, 1e-8);
+  // each body against its own sizes: a stiff body's data are checked as closely as a soft one's
+  const HertzHalfPlanes stiff = hertz(pairs[2]);  // E1/E2 = 1e6
+  const ExactContactResiduals body1 = check_exact_contact(Perturbed(stiff, Perturbed::What::body1_data),
+                                                          [&](double x) { return stiff.gap(x); }, 1, 1, 1);
+  print("body 1 of a stiff pair, u + 1e-4 of its size (data only)", body1);
+  EXPECT_GT(body1.gradient, 1e-6);
+  // u on Gamma_c is compared with its limit from inside: a branch error there is seen
+  const ExactContactResiduals branch = check_exact_contact(Perturbed(h, Perturbed::What::edge_branch),
+                                                           [&](double x) { return h.gap(x); }, 1, 1, 1);
+  print("u_x on Gamma_c left of the zone + 1e-6 |u|", branch);
+  EXPECT_GT(branch.boundary, 1e-7);
+}
+
+// Far from the zone the potential is evaluated without cancellation: on the axis under the
+// centre sigma_zz = -p0 a / sqrt(a^2 + z^2) (McEwen), here at depths up to 10^4 a.
+TEST(HertzHalfPlanes, stress_on_the_axis_is_accurate_far_below_the_zone) {
+  const HertzHalfPlanes h = hertz(pairs[0]);
+  for (double depth : {0.5, 10.0, 1e2, 1e4}) {
+    const double z = depth * a, expected = -h.peak_pressure() * a / std::sqrt(a * a + z * z);
+    EXPECT_NEAR(h.stress(0, {x0, z})(1, 1), expected, 1e-13 * std::fabs(expected)) << "z = " << depth << " a";
+  }
 }
 
 TEST(HertzHalfPlanes, stresses_agree_with_mcewens_closed_form) {
@@ -146,6 +175,10 @@ TEST(HertzHalfPlanes, gap_opens_like_the_power_three_halves_outside_the_zone) {
       EXPECT_GT(open, 0.0) << x;
       EXPECT_NEAR(open, h.open_gap(x), 1e-11 * h.gap(0.0)) << x;
     }
+    // the closed form is continuous where it changes from the series to the direct formula
+    const double switch_at = a * (1 + 1e-3);
+    EXPECT_NEAR(h.open_gap(x0 + sign * switch_at * (1 - 1e-13)), h.open_gap(x0 + sign * switch_at * (1 + 1e-13)),
+                1e-9 * h.open_gap(x0 + sign * switch_at));
     // (|X| - a)^{3/2}: the exponent between d = 1e-6 and 1e-5
     const double d1 = 1e-6, d2 = 1e-5;
     const double exponent = std::log(h.open_gap(x0 + sign * (a + d2)) / h.open_gap(x0 + sign * (a + d1))) / std::log(10.0);

@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
     if (ref.kind == "hertz") chapter05::print_hertz_errors(o, table, f, *ref.hertz);
     if (ref.kind == "exact") table.print_local_rates();
     if (o.scene == "hertz-exact")
-      std::printf("half-width: exact a = %.6f m, computed %.6f m (error %.3g m = %.2f h1), total force %.6g N/m "
+      std::printf("half-width: exact a = %.6f m, computed %.6f m (error %.3g m = %.2f non-mortar elements), total force %.6g N/m "
                   "(exact %.6g)\n", chapter05::hertz_exact_half_width(o.L), f.zone.half_width(),
                   chapter05::half_width_error(f, o.L), table.column("half_width_error_h").back(), f.total_force,
                   exact.total_force(o.L));

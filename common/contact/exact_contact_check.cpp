@@ -25,7 +25,7 @@ std::vector<Sample> body_samples(double L, double H1, double H2) {
   std::vector<Sample> s;
   for (int l = 0; l < 2; ++l) {
     const double H = l == 0 ? H1 : H2, sign = l == 0 ? 1 : -1;
-    for (double t : {0.02, 0.1, 0.3, 0.6, 1.0})
+    for (double t : {0.002, 0.02, 0.1, 0.3, 0.6, 1.0})
       for (int i = 0; i <= 40; ++i) {
         // abscissae off the midpoint and off simple fractions of L: no sample on a symmetry line
         const double x = L * (0.003 + 0.994 * i / 40.0);
@@ -37,28 +37,43 @@ std::vector<Sample> body_samples(double L, double H1, double H2) {
 }  // namespace
 
 double ExactContactResiduals::worst() const {
-  return std::max({gradient, equilibrium, traction, sign, closed_gap, penetration});
+  return std::max({gradient, equilibrium, boundary, traction, sign, closed_gap, penetration});
 }
 
 ExactContactResiduals check_exact_contact(const ExactContact& exact, const std::function<double(double)>& gap,
                                           double L, double H1, double H2) {
   ExactContactResiduals r;
   const std::vector<Sample> samples = body_samples(L, H1, H2);
-  double grad_max = 0, stress_max = 0;
+  // each body measured against its own sizes: a stiff body's small displacements count as much
+  double u_max[2] = {0, 0}, grad_max[2] = {0, 0}, stress_max[2] = {0, 0};
   for (const Sample& s : samples) {
-    grad_max = std::max(grad_max, exact.grad_u(s.body, s.p).norm());
-    stress_max = std::max(stress_max, exact.stress(s.body, s.p).norm());
+    u_max[s.body] = std::max(u_max[s.body], exact.u(s.body, s.p).norm());
+    grad_max[s.body] = std::max(grad_max[s.body], exact.grad_u(s.body, s.p).norm());
+    stress_max[s.body] = std::max(stress_max[s.body], exact.stress(s.body, s.p).norm());
   }
   for (const Sample& s : samples) {
-    const double step = 2e-4 * s.depth;
+    // 2e-4 of the depth, but no shorter than at 2% of the body's height: at smaller depths
+    // round-off (1e-16 |u| / step) would grow past the truncation error it saves
+    const double step = 2e-4 * std::max(s.depth, 0.02 * (s.body == 0 ? H1 : H2));
     const auto u = [&](const Eigen::Vector2d& q) -> Eigen::Vector2d { return exact.u(s.body, q); };
     const auto sigma = [&](const Eigen::Vector2d& q) -> Eigen::Matrix2d { return exact.stress(s.body, q); };
     Eigen::Matrix2d D;
     for (int j = 0; j < 2; ++j) D.col(j) = derivative(u, s.p, j, step);
-    r.gradient = std::max(r.gradient, (D - exact.grad_u(s.body, s.p)).norm() / grad_max);
+    r.gradient = std::max(r.gradient, (D - exact.grad_u(s.body, s.p)).norm() / grad_max[s.body]);
     const Eigen::Matrix2d dx = derivative(sigma, s.p, 0, step), dy = derivative(sigma, s.p, 1, step);
     const Eigen::Vector2d div(dx(0, 0) + dy(0, 1), dx(1, 0) + dy(1, 1));
-    r.equilibrium = std::max(r.equilibrium, (div + exact.body_force(s.body, s.p)).norm() * s.depth / stress_max);
+    r.equilibrium = std::max(r.equilibrium, (div + exact.body_force(s.body, s.p)).norm() * s.depth / stress_max[s.body]);
+  }
+  // u on Gamma_c (both components; Dirichlet data at the corners (0, 0) and (L, 0)) is the limit
+  // of u from inside each body: u(x, 0) against the quadratic through u(x, +-k delta), k = 1..3
+  for (int l = 0; l < 2; ++l) {
+    const double delta = 1e-5 * (l == 0 ? H1 : H2), sign = l == 0 ? 1 : -1;
+    for (int i = 0; i <= 40; ++i) {
+      const double x = L * i / 40.0;
+      const auto at = [&](int k) -> Eigen::Vector2d { return exact.u(l, {x, sign * k * delta}); };
+      const Eigen::Vector2d limit = 3.0 * (at(1) - at(2)) + at(3);
+      r.boundary = std::max(r.boundary, (exact.u(l, {x, 0.0}) - limit).norm() / u_max[l]);
+    }
   }
 
   // Gamma_c: 2001 points, so that both sides of every edge of a contact zone are sampled

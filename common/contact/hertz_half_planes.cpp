@@ -21,11 +21,15 @@ struct Potential {
 Potential potential(double X, double z, double a, double p0) {
   const Complex zeta(X, z + 0.0), minus_i_k(0.0, -p0 / a);  // z + 0.0: never -0
   const Complex S = std::sqrt(zeta - a) * std::sqrt(zeta + a);
+  // zeta - S = a^2 / (zeta + S): the same number without the cancellation of two large ones
+  // far from the zone (|zeta + S| >= a for z >= 0)
+  const Complex zeta_minus_S = a * a / (zeta + S);
   Potential f;
-  f.d1 = minus_i_k * (0.5 * zeta * zeta - 0.5 * zeta * S + 0.5 * a * a * std::log((zeta + S) / a));
-  f.d2 = minus_i_k * (zeta - S);
-  // Phi''' is infinite at the contact edges; it only enters multiplied by z
-  f.d3 = z > 0 ? minus_i_k * (1.0 - zeta / S) : Complex(0.0, 0.0);
+  f.d1 = minus_i_k * (0.5 * zeta * zeta_minus_S + 0.5 * a * a * std::log((zeta + S) / a));
+  f.d2 = minus_i_k * zeta_minus_S;
+  // Phi''' = -i (p0/a) (1 - zeta/S) = i (p0/a) a^2 / ((zeta + S) S), written without the
+  // cancellation; infinite at the contact edges, it only enters multiplied by z
+  f.d3 = z > 0 ? -minus_i_k * zeta_minus_S / S : Complex(0.0, 0.0);
   return f;
 }
 }  // namespace
@@ -90,9 +94,14 @@ double HertzHalfPlanes::total_force(double) const { return 0.5 * pi * a_ * p0_; 
 double HertzHalfPlanes::gap(double x) const { return (x - x0_) * (x - x0_) / (2 * R_); }
 
 double HertzHalfPlanes::open_gap(double x) const {
-  const double X = std::fabs(x - x0_);
-  if (X <= a_) return 0.0;
-  return p0_ / (a_ * e_star_) * (X * std::sqrt(X * X - a_ * a_) - a_ * a_ * std::acosh(X / a_));
+  const double X = std::fabs(x - x0_), d = X - a_;
+  if (d <= 0) return 0.0;
+  const double r = d / a_, scale = p0_ / (a_ * e_star_);
+  // close to the edge the two terms below cancel: the series of their difference instead,
+  // (4/3) sqrt(2a) d^{3/2} (1 + 3r/20 - 3r^2/224), r = d/a, exact to O(r^3)
+  if (r < 1e-3) return scale * 4.0 / 3 * std::sqrt(2 * a_) * d * std::sqrt(d) * (1 + 0.15 * r - 3.0 / 224 * r * r);
+  const double s = std::sqrt(d * (X + a_));  // sqrt(X^2 - a^2), acosh(X/a) = log1p((d + s)/a)
+  return scale * (X * s - a_ * a_ * std::log1p((d + s) / a_));
 }
 
 }  // namespace mortar
