@@ -9,7 +9,6 @@
 #include "common/contact/manufactured_contact.hpp"
 #include "common/linalg/memory_estimate.hpp"
 #include "common/interface/pressure_norms.hpp"
-#include "common/fem/quadrature.hpp"
 
 #include "hertz_reference.hpp"
 #include "peak_pressure.hpp"
