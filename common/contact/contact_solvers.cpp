@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "common/linalg/dual_schur.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

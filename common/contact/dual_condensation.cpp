@@ -6,7 +6,7 @@
 #include <string>
 
 #include "common/contact/contact_solvers.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "common/linalg/dual_schur.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 #ifdef MORTAR_HAVE_UMFPACK
 #include <Eigen/UmfPackSupport>

@@ -6,7 +6,7 @@
 
 #include "common/fem/p2_elasticity.hpp"
 
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

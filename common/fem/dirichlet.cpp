@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

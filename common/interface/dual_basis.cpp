@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/fem/quadrature.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

@@ -7,7 +7,7 @@
 
 #include "common/fem/lagrange_1d.hpp"
 #include "common/fem/quadrature.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

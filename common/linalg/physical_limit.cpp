@@ -6,7 +6,7 @@
 
 #include "common/linalg/memory_estimate.hpp"
 #include "common/linalg/spd_solver.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 
 namespace mortar {
 

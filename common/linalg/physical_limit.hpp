@@ -12,7 +12,7 @@
 #include <functional>
 
 #include "common/fem/p1_elasticity.hpp"
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 namespace mortar {
 

@@ -10,7 +10,7 @@
 #include <thread>
 #include <utility>
 
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 #ifdef MORTAR_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "common/linalg/memory_estimate.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 #include "common/study/timing_report.hpp"
 #include "common/study/two_body_pictures.hpp"
 

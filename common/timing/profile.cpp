@@ -1,4 +1,4 @@
-#include "common/study/profile.hpp"
+#include "common/timing/profile.hpp"
 
 #include <algorithm>
 #include <chrono>
