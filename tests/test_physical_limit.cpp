@@ -11,7 +11,7 @@
 
 #include "common/fem/dirichlet.hpp"
 #include "common/linalg/physical_limit.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 
 using namespace mortar;
 

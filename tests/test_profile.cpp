@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "common/study/profile.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/profile.hpp"
+#include "common/timing/stopwatch.hpp"
 
 using namespace mortar;
 

@@ -26,12 +26,17 @@ std::string out_dir(const std::string& name) {
   return dir;
 }
 
-// Reads "section": { ... "key": number ... } from a summary.json written by write_summary.
-double summary_value(const std::string& dir, const std::string& section, const std::string& key) {
-  std::ifstream f(dir + "/summary.json");
+// The whole text of a file ("" when it cannot be read).
+std::string file_text(const std::string& path) {
+  std::ifstream f(path);
   std::stringstream s;
   s << f.rdbuf();
-  const std::string json = s.str();
+  return s.str();
+}
+
+// Reads "section": { ... "key": number ... } from a summary.json written by write_summary.
+double summary_value(const std::string& dir, const std::string& section, const std::string& key) {
+  const std::string json = file_text(dir + "/summary.json");
   const auto start = json.find("\"" + section + "\": {");
   if (start == std::string::npos) return std::nan("");
   const auto end = json.find('}', start);
@@ -314,10 +319,8 @@ TEST(Programs, ch05_hertz_reports_discretization_and_model_error_apart) {
   EXPECT_GT(reference, 0.0);
   EXPECT_LT(reference, discretization / 3) << r.output;
   EXPECT_NE(r.output.find("model error (reference against half-space Hertz"), std::string::npos) << r.output;
-  std::ifstream summary(dir + "/summary.json");
-  std::stringstream json;
-  json << summary.rdbuf();
-  EXPECT_NE(json.str().find("\"reference_edges_within_one_element\": true"), std::string::npos) << json.str();
+  const std::string json = file_text(dir + "/summary.json");
+  EXPECT_NE(json.find("\"reference_edges_within_one_element\": true"), std::string::npos) << json;
 }
 
 // The reference's estimated error is honest: a reference twice as fine (one more level, and
@@ -365,11 +368,9 @@ TEST(Programs, ch05_zero_errors_have_no_slope_in_the_figures) {
   const std::string dir = out_dir("ch05_zero_slopes");
   const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --delta 0 --out " + dir);
   ASSERT_EQ(r.status, 0) << r.output;
-  std::ifstream f(dir + "/error_vs_h.gp");
-  std::stringstream s;
-  s << f.rdbuf();
-  EXPECT_EQ(s.str().find("nan"), std::string::npos) << s.str();
-  EXPECT_NE(s.str().find("slope undefined"), std::string::npos) << s.str();
+  const std::string script = file_text(dir + "/error_vs_h.gp");
+  EXPECT_EQ(script.find("nan"), std::string::npos) << script;
+  EXPECT_NE(script.find("slope undefined"), std::string::npos) << script;
 }
 
 TEST(Programs, ch05_grazing_contact_has_zero_force) {
@@ -503,10 +504,7 @@ TEST(Programs, ch05_summary_records_the_no_compare_flag_as_given) {
   const std::string dir = out_dir("ch05_no_compare");
   const ProgramRun r = run(std::string(CH05) + " --quick --no-compare --no-plot --out " + dir);
   ASSERT_EQ(r.status, 0) << r.output;
-  std::ifstream f(dir + "/summary.json");
-  std::stringstream s;
-  s << f.rdbuf();
-  const std::string json = s.str();
+  const std::string json = file_text(dir + "/summary.json");
   const auto options = json.substr(0, json.find('}'));  // the "options" block comes first
   EXPECT_NE(options.find("\"no-compare\": true"), std::string::npos) << json;
   EXPECT_NE(options.find("\"quick\": true"), std::string::npos) << json;

@@ -12,7 +12,7 @@
 #include "common/interface/multiplier_space.hpp"
 #include "common/fem/quadrature.hpp"
 #include "common/linalg/spd_solver.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 #include "common/interface/trace_transfer.hpp"
 
 namespace chapter01 {

@@ -4,7 +4,7 @@
 
 #include "common/fem/dirichlet.hpp"
 #include "common/linalg/physical_limit.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 
 namespace chapter02 {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "common/fem/mesh.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 #include "hertz.hpp"
 #include "peak_pressure.hpp"
 

@@ -6,7 +6,7 @@
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/dual_condensation.hpp"
 #include "common/fem/dirichlet.hpp"
-#include "common/study/stopwatch.hpp"
+#include "common/timing/stopwatch.hpp"
 
 namespace chapter05 {
 
