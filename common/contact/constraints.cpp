@@ -92,13 +92,15 @@ Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& g
   return constraint_rows(bodies, g, matching_rows(g, matching), prescribed);
 }
 
-Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
-                            const std::vector<bool>& prescribed) {
+namespace {
+// The rows of c on the dofs of one component (0 = x, 1 = y) of both traces, the non-mortar
+// coefficients times n_nm, the mortar ones times n_m; rows on prescribed dofs only dropped.
+Constraints attach_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
+                        const std::vector<bool>& prescribed, int component, double n_nm, double n_m) {
   const ProfilePhase phase("interface and constraints");
   if (static_cast<int>(prescribed.size()) != bodies.num_dofs())
     throw std::invalid_argument("constraint_rows: the prescribed mask has the wrong size");
   const int nm = g.nonmortar, m = g.mortar();
-  const double n_nm = TwoBodies::normal_y(nm), n_m = TwoBodies::normal_y(m);
 
   Constraints out;
   out.matching = c.matching;
@@ -113,19 +115,32 @@ Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, 
       touches_unknown = touches_unknown || !prescribed[dof];
     };
     for (RowMatrix::InnerIterator it(c.nonmortar, row); it; ++it)
-      add(bodies.dof(nm, g.nonmortar_trace.nodes[it.col()], 1), n_nm * it.value());
+      add(bodies.dof(nm, g.nonmortar_trace.nodes[it.col()], component), n_nm * it.value());
     for (RowMatrix::InnerIterator it(c.mortar, row); it; ++it)
-      add(bodies.dof(m, g.mortar_trace.nodes[it.col()], 1), n_m * it.value());
+      add(bodies.dof(m, g.mortar_trace.nodes[it.col()], component), n_m * it.value());
     if (!touches_unknown) continue;
     entries.insert(entries.end(), this_row.begin(), this_row.end());
     out.row_node.push_back(c.row_node[row]);
     out.row_source.push_back(row);
-    out.pivot_dof.push_back(bodies.dof(nm, g.nonmortar_trace.nodes[c.row_node[row]], 1));
+    out.pivot_dof.push_back(bodies.dof(nm, g.nonmortar_trace.nodes[c.row_node[row]], component));
     ++kept;
   }
   out.B.resize(kept, bodies.num_dofs());
   out.B.setFromTriplets(entries.begin(), entries.end());
   return out;
+}
+}  // namespace
+
+Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
+                            const std::vector<bool>& prescribed) {
+  return attach_rows(bodies, g, c, prescribed, 1, TwoBodies::normal_y(g.nonmortar), TwoBodies::normal_y(g.mortar()));
+}
+
+Constraints tangential_constraint_rows(const TwoBodies& bodies, const ContactInterface& g, const MatchingRows& c,
+                                       const std::vector<bool>& prescribed) {
+  // [u_t] = u^1_x - u^2_x: +1 on body 1's x dofs, -1 on body 2's, whichever side is non-mortar
+  const double nm_sign = g.nonmortar == 0 ? 1.0 : -1.0;
+  return attach_rows(bodies, g, c, prescribed, 0, nm_sign, -nm_sign);
 }
 
 Eigen::VectorXd tested_gap(const ContactInterface& gamma, const Constraints& c,

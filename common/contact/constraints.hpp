@@ -76,6 +76,10 @@ struct Constraints {
 // about the unknowns and would make the saddle-point matrix singular.
 Constraints constraint_rows(const TwoBodies& bodies, const ContactInterface& gamma, const MatchingRows& rows,
                             const std::vector<bool>& prescribed);
+// The same rows on the tangential dofs (chapter 8): (B_t u)_i = int psi_i [u_t] with the slip
+// [u_t] = u^1_x - u^2_x of body 1 over body 2, pivots on the non-mortar x dofs.
+Constraints tangential_constraint_rows(const TwoBodies& bodies, const ContactInterface& gamma,
+                                       const MatchingRows& rows, const std::vector<bool>& prescribed);
 // constraint_rows of the matching's own rows.
 Constraints build_constraints(const TwoBodies& bodies, const ContactInterface& gamma,
                               Matching matching, const std::vector<bool>& prescribed);

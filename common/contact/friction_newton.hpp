@@ -1,0 +1,84 @@
+// Frictional contact with a dual basis (chapter 8): chapter 6's condensation applied to the
+// normal and the tangential rows at once, and a semismooth Newton method on the nodal
+// conditions of friction_conditions.hpp.
+//
+// Node i of the non-mortar trace has two rows, B_n (weighted gap) and B_t (weighted slip), and
+// two pivots, its y dof and its x dof. condense_contact takes the stacked rows [B_n; B_t] and
+// replaces both pivots by w_n and w_t: u = T v + g, A = T^T K T, r = T^T (f - K g), and the
+// multipliers are read node by node, (lambda_n, lambda_t)_i = (r - A v) at the two pivots.
+// Equilibrium holds in every other row of A v = r; the pivot rows carry the nodal equations
+// C_n = 0 and C_t = 0 instead, linearized at the current point:
+//
+//   grad C . (lambda_n, w_n, lambda_t, dw_t)^+ = grad C . (lambda_n, w_n, lambda_t, dw_t) - C,
+//
+// with lambda^+ = (r - A v^+) at the pivots: one sparse row per equation. Three kinds of row:
+//  - a prescribed value (contact: w_n = 0; Tresca stick: dw_t = 0): v_p known, its column
+//    moves to the right-hand side, the matrix stays symmetric;
+//  - a row of A (open node: lambda = 0; Tresca slip: lambda_t = s z / |z|), symmetric, perhaps
+//    with a shift of its diagonal;
+//  - a coupled row (Coulomb slip: lambda_t = F lambda_n z / |z|, or Coulomb stick away from its
+//    fixed point): the tangential row of node i holds a multiple of the normal row of A, and
+//    no row holds the transpose. The matrix is then nonsymmetric: one sparse LU (UMFPACK).
+// A step whose rows are of the first two kinds only is solved by Cholesky (CHOLMOD), as in
+// chapter 6; a symmetric matrix that is not positive definite (a negative shift) falls back to
+// the LU. The method stops when max |C_n| / Lambda and max |C_t| / Lambda^2 (Lambda the
+// largest multiplier, or c times the largest weighted gap or slip) fall below the tolerance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/contact/dual_condensation.hpp"
+#include "common/contact/friction_conditions.hpp"
+
+namespace mortar {
+
+// The normal problem p (rows B_n u <= G) and the tangential rows t (same nodes, same order, on
+// the x dofs; their G is the slip offset, zero) as one problem: B = [B_n; B_t], pivots
+// [y pivots; x pivots]. Throws when the two sets of rows are not on the same nodes.
+SaddlePointProblem stack_frictional_rows(const SaddlePointProblem& p, const SaddlePointProblem& t);
+
+struct FrictionOptions {
+  FrictionLaw law = FrictionLaw::coulomb;
+  double friction = 0;               // F
+  Eigen::VectorXd threshold;         // Tresca's s per node (law tresca)
+  Eigen::VectorXd previous_slip;     // w_t at the end of the last load step (empty: zero)
+  std::vector<NodalUnknowns> start;  // the point of the first linearization (empty: all zero)
+  bool bounded_gradient = true;      // friction_conditions.hpp, tangential_gradient
+  int max_steps = 50;
+  double tolerance = 1e-12;
+  SpdBackend backend = fastest_spd_backend();
+};
+
+struct FrictionSolution {
+  Eigen::VectorXd u;  // free dofs
+  std::vector<NodalUnknowns> nodes;  // per node at the end (dw_t against previous_slip)
+  Eigen::VectorXd lambda_n, lambda_t, w_n, w_t;
+  std::vector<NodeStatus> status;
+  int steps = 0;                  // Newton steps (solves)
+  int lu_steps = 0;               // of which nonsymmetric (sparse LU)
+  std::vector<double> residuals;  // after each step
+  std::vector<int> stick, slip;   // node counts after each step
+};
+
+// The nodal unknowns of node i (of c's m / 2) at v.
+NodalUnknowns nodal_unknowns(const CondensedContact& c, const Eigen::VectorXd& v, int node, double previous_slip);
+
+// Throws std::runtime_error when the residual has not fallen below the tolerance within
+// max_steps (naming the last residual and the statuses), or when a step's matrix is singular
+// (every node slipping under a load friction cannot hold: gross sliding).
+FrictionSolution solve_frictional_contact(const CondensedContact& c, const FrictionOptions& options);
+
+// Coulomb as a sequence of Tresca problems (the older method, for comparison): s^{k+1} =
+// F max(0, lambda_n^k), from s^0 = 0 (frictionless), until the thresholds change by less than
+// tolerance x max s. Each Tresca problem is solved by the Newton method above.
+struct FixedPointSolution {
+  FrictionSolution last;
+  int outer = 0;        // Tresca problems solved
+  int total_steps = 0;  // Newton steps over all of them
+  std::vector<double> threshold_changes;
+};
+FixedPointSolution solve_coulomb_by_fixed_point(const CondensedContact& c, const FrictionOptions& options,
+                                                int max_outer = 100, double tolerance = 1e-10);
+
+}  // namespace mortar

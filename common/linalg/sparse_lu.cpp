@@ -1,0 +1,99 @@
+#include "common/linalg/sparse_lu.hpp"
+
+#include <Eigen/SparseLU>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#ifdef MORTAR_HAVE_UMFPACK
+#include <Eigen/UmfPackSupport>
+#endif
+
+namespace mortar {
+
+namespace {
+// An LU runs through a singular matrix whenever round-off leaves a tiny pivot, and with a
+// consistent right-hand side the residual even looks fine. Singular to working precision
+// means: UMFPACK's reciprocal pivot ratio min |U_ii| / max |U_ii| below this (after its row
+// scaling), or, with Eigen's SparseLU, a solve that cannot give back a known vector.
+constexpr double singular_rcond = 1e-14;
+// The backward error a solve may leave, ||A x - b|| / (||A|| ||x|| + ||b||): a stable LU gives
+// a small multiple of eps; far above that, the factors do not describe A. Against ||b|| alone,
+// a stiff body (entries of K near E) under a small load would look inaccurate although the
+// solve is as good as the data.
+constexpr double backward_tol = 1e-8;
+
+std::string sci(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3e", v);
+  return text;
+}
+
+double infinity_norm(const SparseMatrix& A) {
+  Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(A.rows());
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it) row_sums[it.row()] += std::fabs(it.value());
+  return row_sums.size() > 0 ? row_sums.maxCoeff() : 0.0;
+}
+
+#ifdef MORTAR_HAVE_UMFPACK
+// UMFPACK's own estimate of the reciprocal condition (min |U_ii| / max |U_ii|), which Eigen
+// keeps but does not show.
+class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
+ public:
+  double rcond() const { return m_umfpackInfo[UMFPACK_RCOND]; }
+};
+#endif
+}  // namespace
+
+struct SparseLu::Impl {
+  SparseMatrix A;  // kept for the backward error of each solve
+#ifdef MORTAR_HAVE_UMFPACK
+  UmfPackLU lu;
+#else
+  Eigen::SparseLU<SparseMatrix> lu;
+#endif
+};
+
+SparseLu::SparseLu() : impl_(std::make_unique<Impl>()) {}
+SparseLu::~SparseLu() = default;
+SparseLu::SparseLu(SparseLu&&) noexcept = default;
+SparseLu& SparseLu::operator=(SparseLu&&) noexcept = default;
+
+std::string SparseLu::name() {
+#ifdef MORTAR_HAVE_UMFPACK
+  return "UMFPACK";
+#else
+  return "Eigen SparseLU";
+#endif
+}
+
+void SparseLu::factorize(const SparseMatrix& A) {
+  impl_->A = A;
+  impl_->lu.compute(impl_->A);
+  if (impl_->lu.info() != Eigen::Success) throw std::runtime_error("sparse LU (" + name() + "): a zero pivot: the matrix is singular");
+#ifdef MORTAR_HAVE_UMFPACK
+  if (!(impl_->lu.rcond() > singular_rcond))
+    throw std::runtime_error("sparse LU (UMFPACK): pivot ratio " + sci(impl_->lu.rcond()) +
+                             ": the matrix is singular to working precision");
+#else
+  // SparseLU runs through a tiny pivot: a solve that cannot give back a known vector tells
+  const Eigen::VectorXd probe = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, 2.0);
+  const Eigen::VectorXd back = impl_->lu.solve(A * probe);
+  if (!((back - probe).norm() < 1e-6 * probe.norm()))
+    throw std::runtime_error("sparse LU (Eigen SparseLU): a solve of A x = A v missed v by " +
+                             sci((back - probe).norm() / probe.norm()) + ": the matrix is singular to working precision");
+#endif
+}
+
+Eigen::VectorXd SparseLu::solve(const Eigen::VectorXd& b) const {
+  const Eigen::VectorXd x = impl_->lu.solve(b);
+  const double r = (impl_->A * x - b).lpNorm<Eigen::Infinity>();
+  const double scale = infinity_norm(impl_->A) * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>();
+  if (!x.allFinite() || !(r <= backward_tol * scale))
+    throw std::runtime_error("sparse LU (" + name() + "): residual " + sci(r) + " > " + sci(backward_tol) +
+                             " x (||A|| ||x|| + ||b||): the matrix is singular to working precision");
+  return x;
+}
+
+}  // namespace mortar

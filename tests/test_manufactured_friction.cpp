@@ -1,0 +1,83 @@
+// The exact solution of chapter 8's manufactured scene, checked against the frictional contact
+// problem by finite differences, independently of any solver: equilibrium, grad u, the
+// tractions on Gamma_c from both sides, and the friction law on the stick and the slip zone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/contact/manufactured_friction.hpp"
+
+using namespace mortar;
+
+namespace {
+Eigen::Vector2d div_stress(const ExactContact& m, int l, const Eigen::Vector2d& p, double h) {
+  const Eigen::Vector2d ex(h, 0), ey(0, h);
+  const Eigen::Matrix2d dx = (m.stress(l, p + ex) - m.stress(l, p - ex)) / (2 * h);
+  const Eigen::Matrix2d dy = (m.stress(l, p + ey) - m.stress(l, p - ey)) / (2 * h);
+  return {dx(0, 0) + dy(0, 1), dx(1, 0) + dy(1, 1)};
+}
+struct Pair {
+  double E1, nu1, E2, nu2;
+};
+const Pair pairs[] = {{1, 0.3, 1, 0.3}, {1, 0.3, 3, 0.25}, {1e6, 0.2, 1, 0.45}};
+}  // namespace
+
+TEST(ManufacturedFriction, satisfies_equilibrium_and_grad_u_is_the_derivative_of_u) {
+  for (double L : {1.0, 1e-3, 1e3})
+    for (const Pair& c : pairs) {
+      const ManufacturedFriction m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), L, 0.3);
+      const double h = 1e-5 * L;
+      for (int l = 0; l < 2; ++l)
+        for (double xi : {0.05, 0.3, m.stick_slip_point() / L + 0.05, 0.9})
+          for (double eta : {0.1, 0.4}) {
+            const Eigen::Vector2d p(xi * L, (l == 0 ? eta : -eta) * L);
+            const Eigen::Vector2d f = m.body_force(l, p);
+            const double scale = m.stress(l, p).norm() / L + f.norm();
+            EXPECT_LT((div_stress(m, l, p, h) + f).norm(), 1e-6 * scale) << "L " << L << " body " << l + 1;
+            const Eigen::Vector2d ex(h, 0), ey(0, h);
+            Eigen::Matrix2d fd;
+            fd.col(0) = (m.u(l, p + ex) - m.u(l, p - ex)) / (2 * h);
+            fd.col(1) = (m.u(l, p + ey) - m.u(l, p - ey)) / (2 * h);
+            EXPECT_LT((fd - m.grad_u(l, p)).norm(), 1e-8 * m.grad_u(l, p).norm()) << "L " << L;
+          }
+    }
+}
+
+TEST(ManufacturedFriction, tractions_on_gamma_c_agree_from_both_sides) {
+  for (const Pair& c : pairs) {
+    const ManufacturedFriction m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), 1.0, 0.3);
+    for (double x : {0.0, 0.2, 0.41, 0.42, 0.7, 1.0}) {
+      const Eigen::Vector2d p(x, 0.0);
+      const Eigen::Matrix2d s1 = m.stress(0, p), s2 = m.stress(1, p);
+      // sigma_12 = mu (P + c') adds terms of the size of the whole stress: round-off of it
+      const double scale = 1e3 * (s1.norm() + s2.norm());
+      EXPECT_NEAR(s1(0, 1), m.shear(x), 1e-12 * scale);
+      EXPECT_NEAR(s2(0, 1), m.shear(x), 1e-12 * scale);
+      EXPECT_NEAR(s1(1, 1), -m.pressure(x), 1e-12 * scale);
+      EXPECT_NEAR(s2(1, 1), -m.pressure(x), 1e-12 * scale);
+      EXPECT_NEAR(m.u(0, p).y(), m.u(1, p).y(), 1e-15);                  // closed
+      EXPECT_NEAR(m.u(0, p).x() - m.u(1, p).x(), m.slip(x), 1e-15);      // the slip
+    }
+  }
+}
+
+TEST(ManufacturedFriction, sticks_below_the_threshold_and_slips_at_it_with_the_slips_sign) {
+  const ManufacturedFriction m(Material(1, 0.3), Material(3, 0.25), 1.0, 0.3);
+  const double xc = m.stick_slip_point();
+  EXPECT_GT(std::fabs(xc * 1024 - std::round(xc * 1024)), 0.05);  // not a node of dyadic meshes
+  bool shear_changes_sign = false;
+  for (int k = 0; k <= 1000; ++k) {
+    const double x = k / 1000.0, s = m.threshold(x), tau = m.shear(x);
+    ASSERT_GT(m.pressure(x), 0);
+    if (x < xc) {
+      EXPECT_EQ(m.slip(x), 0.0);
+      EXPECT_LT(std::fabs(tau), s) << x;
+      shear_changes_sign = shear_changes_sign || tau < 0;
+    } else {
+      EXPECT_GE(m.slip(x), 0.0);
+      EXPECT_NEAR(tau, s, 1e-15);
+    }
+  }
+  EXPECT_TRUE(shear_changes_sign);
+  EXPECT_GT(m.slip(1.0), 0.0);
+}
