@@ -26,7 +26,7 @@ SceneData manufactured_scene(const TwoBodies& bodies, const ExactContact& exact)
   for (int l = 0; l < 2; ++l) {
     const Mesh& mesh = bodies.body(l).mesh;
     Eigen::VectorXd F = body_force_vector(
-        mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4);
+        mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4, exact.body_force_breaks());
     // (the explicit return type matters: an Eigen product expression would outlive its operands)
     add_traction(F, mesh, Side::left,
                  [&](const Eigen::Vector2d& p) -> Eigen::Vector2d { return exact.stress(l, p).col(0) * -1.0; }, 3);
@@ -47,7 +47,8 @@ SceneData manufactured_scene_all_sides(const TwoBodies& bodies, const ExactConta
     const Mesh& mesh = bodies.body(l).mesh;
     const Eigen::VectorXd F =
         exact.has_body_force()
-            ? body_force_vector(mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4)
+            ? body_force_vector(mesh, [&](const Eigen::Vector2d& p) { return exact.body_force(l, p); }, 4,
+                                exact.body_force_breaks())
             : Eigen::VectorXd::Zero(mesh.num_dofs());
     DirichletData d;
     prescribe_on_sides(d, mesh, {l == 0 ? Side::top : Side::bottom, Side::left, Side::right},

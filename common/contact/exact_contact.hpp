@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "common/fem/errors.hpp"
 #include "common/fem/p1_elasticity.hpp"
@@ -25,6 +26,8 @@ class ExactContact {
   virtual Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const = 0;  // d u_i / d x_j
   virtual Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const = 0;  // f = -div sigma
   virtual bool has_body_force() const { return true; }  // false: f = 0, no load to integrate
+  // Vertical lines x = b across which the body force jumps (the load is integrated on each side)
+  virtual std::vector<double> body_force_breaks() const { return {}; }
   virtual double pressure(double x) const = 0;  // p = -sigma_N on Gamma_c
   // int_0^L p: 8-point Gauss on 64 pieces unless a kind knows it in closed form
   virtual double total_force(double L) const;

@@ -47,12 +47,12 @@ ManufacturedFriction::ManufacturedFriction(const Material& body1, const Material
 Jet ManufacturedFriction::pressure_jet(double x) const { return Jet{S_, 0, 0, 0} + sine(0.3 * S_, x, L_); }
 
 Jet ManufacturedFriction::shear_jet(double x) const {
-  return F_ * (pressure_jet(x) + power(-20 * S_, x, xc_, L_, 3, -1.0));
+  return F_ * (pressure_jet(x) + power(-8 * S_, x, xc_, L_, 2, -1.0));
 }
 
 double ManufacturedFriction::pressure(double x) const { return pressure_jet(x).f; }
 double ManufacturedFriction::shear(double x) const { return shear_jet(x).f; }
-double ManufacturedFriction::slip(double x) const { return power(2 * L_ * eps_, x, xc_, L_, 4, 1.0).f; }
+double ManufacturedFriction::slip(double x) const { return power(2 * L_ * eps_, x, xc_, L_, 3, 1.0).f; }
 double ManufacturedFriction::threshold(double x) const { return F_ * pressure(x); }
 
 ManufacturedFriction::Profiles ManufacturedFriction::profiles(int l, double x) const {
@@ -61,7 +61,7 @@ ManufacturedFriction::Profiles ManufacturedFriction::profiles(int l, double x) c
   Profiles q;
   q.c = cosine(0.5 * L_ * eps_, x, L_);
   q.A = sine(0.3 * L_ * eps_, x, L_);
-  if (l == 0) q.A = q.A + power(2 * L_ * eps_, x, xc_, L_, 4, 1.0);
+  if (l == 0) q.A = q.A + power(2 * L_ * eps_, x, xc_, L_, 3, 1.0);
   // sigma_12 = mu (P + c') = tau on y = 0
   const Jet tau = shear_jet(x), p = pressure_jet(x);
   q.P = {tau.f / mu - q.c.d1, tau.d1 / mu - q.c.d2, tau.d2 / mu - q.c.d3, 0};

@@ -100,6 +100,69 @@ Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int de
   return F;
 }
 
+namespace {
+using Polygon = std::vector<Eigen::Vector2d>;
+
+// The part of a convex polygon with x <= b (keep_left) or x >= b, by clipping against the line.
+Polygon clip(const Polygon& poly, double b, bool keep_left) {
+  Polygon out;
+  const auto inside = [&](const Eigen::Vector2d& p) { return keep_left ? p.x() <= b : p.x() >= b; };
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Eigen::Vector2d& a = poly[k];
+    const Eigen::Vector2d& c = poly[(k + 1) % poly.size()];
+    if (inside(a)) out.push_back(a);
+    if (inside(a) != inside(c)) {
+      const double t = (b - a.x()) / (c.x() - a.x());
+      out.push_back(a + t * (c - a));
+    }
+  }
+  return out;
+}
+}  // namespace
+
+Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree,
+                                  const std::vector<double>& x_breaks) {
+  if (x_breaks.empty()) return body_force_vector(mesh, f, degree);
+  if (mesh.degree() == 2) throw std::invalid_argument("body_force_vector: breaks are for P1 meshes");
+  const TriangleRule rule = triangle_rule(degree);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(mesh.num_dofs());
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto x = triangle_vertices(mesh, t);
+    const auto& tri = mesh.triangles[t];
+    // barycentric coordinates of the parent triangle: phi_k at any point of a piece
+    Eigen::Matrix2d J;
+    J << x[1] - x[0], x[2] - x[0];
+    const Eigen::Matrix2d J_inv = J.inverse();
+    std::vector<Polygon> pieces{{x[0], x[1], x[2]}};
+    for (double b : x_breaks) {
+      std::vector<Polygon> next;
+      for (const Polygon& poly : pieces)
+        for (bool left : {true, false}) {
+          Polygon part = clip(poly, b, left);
+          if (part.size() >= 3) next.push_back(std::move(part));
+        }
+      pieces = std::move(next);
+    }
+    for (const Polygon& poly : pieces)
+      for (std::size_t k = 1; k + 1 < poly.size(); ++k) {  // fan of triangles
+        const Eigen::Vector2d a = poly[0], e1 = poly[k] - a, e2 = poly[k + 1] - a;
+        const double area = 0.5 * std::fabs(e1.x() * e2.y() - e1.y() * e2.x());
+        if (!(area > 0)) continue;
+        for (std::size_t q = 0; q < rule.points.size(); ++q) {
+          const Eigen::Vector2d p = a + rule.points[q].x() * e1 + rule.points[q].y() * e2;
+          const Eigen::Vector2d sr = J_inv * (p - x[0]);
+          const double phi[3] = {1 - sr.x() - sr.y(), sr.x(), sr.y()};
+          const Eigen::Vector2d fq = f(p);
+          for (int c = 0; c < 3; ++c) {
+            F[2 * tri[c]] += area * rule.weights[q] * fq.x() * phi[c];
+            F[2 * tri[c] + 1] += area * rule.weights[q] * fq.y() * phi[c];
+          }
+        }
+      }
+  }
+  return F;
+}
+
 void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g,
                   int n_gauss) {
   if (mesh.degree() == 2) return add_p2_traction(F, mesh, side, g, n_gauss);

@@ -52,6 +52,11 @@ void add_stiffness_triplets(const Mesh& mesh, const Material& material, int offs
 // on a P2 mesh (the six shape functions, p2_elasticity.hpp) the rule's degree is degree + 2,
 // as the shape functions are one degree higher: f . phi_i is exact for f of degree `degree`.
 Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree);
+// The same for a force that jumps across the vertical lines x = b, b in x_breaks (P1 only): a
+// triangle a line crosses is cut along it and each piece integrated by the rule, so the jump
+// costs no accuracy (a rule across it would make an O(h^2) error in every cut triangle: a
+// line load of O(h), which caps the L2 rate at 1).
+Eigen::VectorXd body_force_vector(const Mesh& mesh, const VectorField& f, int degree, const std::vector<double>& x_breaks);
 // Adds the load of a traction g on one side: F_i += int_side g . phi_i (Gauss-Legendre, n points;
 // n + 1 on a P2 mesh, whose side edges carry the quadratics (1-s)(1-2s), 4s(1-s), s(2s-1)).
 void add_traction(Eigen::VectorXd& F, const Mesh& mesh, Side side, const VectorField& g, int n_gauss);
