@@ -23,7 +23,7 @@ struct LevelSetup {
   bool fixed_point = false;  // Coulomb as a sequence of Tresca problems
   double normal_force = 0;   // > 0: the P the scene's shear refers to (else step 0's)
   bool measure_limit = true;
-  mortar::Repetitions repetitions;
+  mortar::Repetitions repetitions{1, 5, 1.0};  // a level of seconds is timed once
   // Where the first Newton step starts: the status (and slip direction) at x, from a coarser
   // level (nested_start); empty: the scene's own start.
   std::function<std::pair<mortar::NodeStatus, double>(double x)> start_at;

@@ -8,9 +8,12 @@
 //   ch08_friction --law tresca                      # the same exact solution, Tresca's threshold F p
 //   ch08_friction --scene cattaneo                  # normal load, then shear in 10 steps: Cattaneo-Mindlin
 //   ch08_friction --scene cattaneo --q-ratio 0.95   # a stick zone of a few elements
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 
+#include "comparisons.hpp"
+#include "figures.hpp"
 #include "study.hpp"
 
 int main(int argc, char** argv) {
@@ -82,6 +85,32 @@ int main(int argc, char** argv) {
                 "time %.3f s = %.2f x the physical limit (%.3f s)\n",
                 f.bodies.num_dofs(), static_cast<int>(f.steps.size()), f.newton_steps_max(), f.lu_steps_total(),
                 f.time_s, f.time_s / f.limit_s, f.limit_s);
+
+    // 5. Beside the study: Newton against the fixed point (manufactured, Coulomb), or the load
+    //    paths (cattaneo), on the level below the finest (a quarter of its cost).
+    const int compared_level = std::max(0, o.levels - 2);
+    if (!o.no_compare && o.scene == "manufactured" && o.law == "coulomb")
+      chapter08::write_solver_runs(o.out + "/solvers.csv",
+                                   chapter08::compare_solvers(o, {0.1, 0.2, 0.3, 0.5, 1.0}, compared_level));
+    if (!o.no_compare && o.scene == "cattaneo")
+      chapter08::write_path_runs(o.out + "/paths.csv", chapter08::compare_paths(o, compared_level));
+
+    // 6. Figures.
+    const bool run = !o.no_plot;
+    chapter08::ExactCurves curves;
+    if (o.scene == "manufactured") {
+      curves = {[&](double x) { return exact.shear(x); }, [&](double x) { return exact.threshold(x); },
+                "exact shear τ", 0, 0};
+    } else {
+      const chapter08::CattaneoStep& c = cattaneo.back();
+      const chapter08::CattaneoMindlin cm(c.P, c.Q, o.friction, chapter08::e_star(o), o.R, 0.5 * o.L);
+      curves = {[cm](double x) { return cm.shear(x); }, {}, "Cattaneo-Mindlin q(x) at the computed P, Q",
+                0.5 * o.L - 1.4 * cm.half_width(), 0.5 * o.L + 1.4 * cm.half_width()};
+      chapter08::plot_stick_zone(o.out, cattaneo, cm.half_width(), run);
+    }
+    chapter08::plot_zones(o.out, f, o, curves, run);
+    chapter08::plot_errors(o.out, table, o, run);
+    chapter08::plot_newton(o.out, f, run);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch08_friction: error: %s\n", e.what());

@@ -18,10 +18,9 @@ constexpr double max_dofs = 4'000'000;
 // factor (Cholesky, or UMFPACK's LU, about twice the Cholesky factor).
 constexpr double bytes_per_dof = 3000;
 
-double e_star(const Options& o) {
-  return 1.0 / ((1 - o.nu1 * o.nu1) / o.E1 + (1 - o.nu2 * o.nu2) / o.E2);
-}
 }  // namespace
+
+double e_star(const Options& o) { return 1.0 / ((1 - o.nu1 * o.nu1) / o.E1 + (1 - o.nu2 * o.nu2) / o.E2); }
 
 mortar::FrictionLaw law_of(const Options& o) {
   return o.law == "tresca" ? mortar::FrictionLaw::tresca : mortar::FrictionLaw::coulomb;

@@ -33,6 +33,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
 SceneParameters scene_parameters(const Options& o);
 LevelSetup level_setup(const Options& o, int level);
 mortar::FrictionLaw law_of(const Options& o);
+// 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+double e_star(const Options& o);
 
 // The manufactured scene: a row of convergence.csv.
 mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::ManufacturedFriction& exact);
