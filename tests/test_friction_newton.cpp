@@ -9,6 +9,7 @@
 
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/friction_newton.hpp"
+#include "common/contact/manufactured_friction.hpp"
 #include "common/interface/dual_basis.hpp"
 
 using namespace mortar;
@@ -169,4 +170,31 @@ TEST(FrictionNewton, coulomb_by_fixed_point_on_tresca_thresholds_is_the_same_ans
   int slipping = 0;
   for (NodeStatus s : newton.status) slipping += s == NodeStatus::slip;
   EXPECT_GT(slipping, 0);  // the case has slip, so Coulomb's coupling matters
+}
+
+// Chapter 8's manufactured scene with F = 0 is frictionless contact with exact Dirichlet data:
+// chapter 6's semismooth Newton method on the normal rows alone must give the same answer.
+TEST(FrictionNewton, zero_friction_on_the_manufactured_scene_is_chapter_6s_answer) {
+  TwoBodyGeometry g;
+  g.n1 = g.m1 = 16;
+  g.n2 = g.m2 = 11;
+  g.H1 = g.H2 = 0.5;
+  g.m1 = 8;
+  g.m2 = 6;
+  const ManufacturedFriction exact(Material(1, 0.3), Material(3, 0.25), 1.0, 0.0);
+  const TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));
+  const SceneData scene = manufactured_scene_all_sides(bodies, exact);
+  const std::vector<bool> mask = scene.prescribed_mask(bodies.num_dofs());
+  const ContactInterface gamma = make_dual_interface(bodies, 0);
+  const MatchingRows rows = integral_matching_rows(gamma);
+  const Constraints cn = constraint_rows(bodies, gamma, rows, mask), ct = tangential_constraint_rows(bodies, gamma, rows, mask);
+  const ReducedSystem system = eliminate_dirichlet(bodies.stiffness(), scene.F, scene.dirichlet);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(cn.B.rows());
+  const SaddlePointProblem normal = reduce_to_free_dofs(system, cn, zero);
+  CondensedContact frictionless = condense_contact(normal);
+  const DualContactSolution reference = solve_dual_contact(frictionless, DualContactOptions{});
+  const FrictionSolution x = solve_frictional_contact(
+      condense_contact(stack_frictional_rows(normal, reduce_to_free_dofs(system, ct, zero))), coulomb(0.0));
+  EXPECT_LT(relative(x.u, reference.u), 1e-10);
+  EXPECT_LT(relative(x.lambda_n, reference.lambda), 1e-10);
 }

@@ -90,12 +90,12 @@ std::vector<PathRun> compare_paths(const Options& o, int level) {
     runs.push_back(run);
   };
   char name[80];
-  std::snprintf(name, sizeof name, "P, then Q in %d steps", o.load_steps);
+  std::snprintf(name, sizeof name, "P then Q in %d steps", o.load_steps);
   record(name, standard);
   // 2. The same loads, Q in one step.
   SceneParameters one = scene_parameters(o);
   one.load_steps = 1;
-  record("P, then Q in 1 step", solve_frictional_level(setup, make_scene(one, unused), m1, m2));
+  record("P then Q in 1 step", solve_frictional_level(setup, make_scene(one, unused), m1, m2));
   // 3. P and Q together, in load_steps proportional steps, to the same final Q (Mindlin).
   SceneParameters together = scene_parameters(o);
   together.proportional = true;
@@ -111,7 +111,7 @@ void write_path_runs(const std::string& path, const std::vector<PathRun>& runs) 
   out << "path,steps,newton_steps,q_ratio,stick_half_width,contact_half_width,shear_difference\n";
   char line[300];
   for (const PathRun& r : runs) {
-    std::snprintf(line, sizeof line, "\"%s\",%d,%d,%.6f,%.8g,%.8g,%.4g\n", r.path.c_str(), r.steps, r.newton_steps,
+    std::snprintf(line, sizeof line, "%s,%d,%d,%.6f,%.8g,%.8g,%.4g\n", r.path.c_str(), r.steps, r.newton_steps,
                   r.q_ratio, r.c_h, r.contact_half_width, r.shear_difference);
     out << line;
   }

@@ -24,7 +24,7 @@ std::vector<SolverRun> compare_solvers(const Options& o, const std::vector<doubl
 void write_solver_runs(const std::string& path, const std::vector<SolverRun>& runs);
 
 struct PathRun {
-  std::string path;  // "P, then Q in N steps", ...
+  std::string path;  // "P then Q in N steps", ... (no comma: a CSV field)
   int steps = 0, newton_steps = 0;
   double q_ratio = 0, c_h = 0, contact_half_width = 0;
   double shear_difference = 0;  // ||lambda_t - lambda_t of the first path|| / ||lambda_t of the first||

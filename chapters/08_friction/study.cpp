@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include "common/fem/errors.hpp"
 #include "common/linalg/memory_estimate.hpp"
@@ -75,6 +76,12 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
       parser.fail("q-ratio", "Q >= F P is gross sliding: no stick zone is left, and friction cannot hold body 1 "
                              "(its only support in x); choose --q-ratio below 1");
   }
+  // the Newton residual divides C_t by Lambda^2, Lambda ~ E eps: E must keep its square in range
+  // (the displacements do not depend on the unit of E: choose one that brings E near 1)
+  for (const auto& [name, E] : {std::pair<const char*, double>{"E1", o.E1}, {"E2", o.E2}})
+    if (E < 1e-100 || E > 1e100)
+      parser.fail(name, "the Newton residual squares the multipliers, which scale like E: E must lie in "
+                        "[1e-100, 1e100] Pa (change its unit)");
   if (o.solver == "fixed-point" && o.law == "tresca")
     parser.fail("solver", "the fixed point on Tresca thresholds solves Coulomb's law: use --law coulomb");
   parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 3}});
