@@ -16,7 +16,7 @@ packages=(g++ cmake make libeigen3-dev libgsl-dev gnuplot-nox fonts-dejavu-core
 book_packages=(pandoc texlive-xetex texlive-latex-recommended texlive-fonts-recommended lmodern
                fonts-dejavu-core poppler-utils)
 chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
-          ch05_unilateral_uzawa ch06_dual_mortar ch07_quadratic_elements)
+          ch05_unilateral_uzawa ch06_dual_mortar ch07_quadratic_elements ch08_friction)
 jobs=$(nproc 2>/dev/null || echo 2)
 logs=build/logs/${1:-none}
 step_count=0
@@ -87,13 +87,17 @@ configure() {
 # Chapter 5's smooth closure (the signorini scene, about 100 s with the solver comparison) and its
 # exact Hertz solution, Theorem 5.1 measured at true contact edges (about 75 s with the comparison).
 # Chapter 7 with pointwise matching: Theorem 4.1's h^{1/2} with P2, beside P1 (about 25 s).
+# Chapter 8's Cattaneo-Mindlin scene: normal load, then shear in ten steps, and the load paths
+# (about 90 s), and its manufactured scene under Tresca's law (about 40 s).
 extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
             "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
             "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"
             "ch05_unilateral_uzawa|bilateral|--scene bilateral --levels 4 --no-compare|chapter 5, scene bilateral"
             "ch05_unilateral_uzawa|signorini|--scene signorini|chapter 5, scene signorini"
             "ch05_unilateral_uzawa|hertz_exact|--scene hertz-exact|chapter 5, scene hertz-exact"
-            "ch07_quadratic_elements|pointwise|--matching pointwise|chapter 7, pointwise matching")
+            "ch07_quadratic_elements|pointwise|--matching pointwise|chapter 7, pointwise matching"
+            "ch08_friction|cattaneo|--scene cattaneo|chapter 8, Cattaneo-Mindlin"
+            "ch08_friction|tresca|--law tresca --no-compare|chapter 8, Tresca")
 
 # run_program PROGRAM RESULTS FIGURES [OPTIONS...]: the full output stays in RESULTS; the
 # figures (PNG, and PDF when the program writes them) go to FIGURES, the .vtu files do not.

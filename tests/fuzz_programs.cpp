@@ -213,3 +213,4 @@ TEST(FuzzPrograms, ch04_command_lines_end_in_status_0_or_2) { fuzz(CH04); }
 TEST(FuzzPrograms, ch05_command_lines_end_in_status_0_or_2) { fuzz(CH05); }
 TEST(FuzzPrograms, ch06_command_lines_end_in_status_0_or_2) { fuzz(CH06); }
 TEST(FuzzPrograms, ch07_command_lines_end_in_status_0_or_2) { fuzz(CH07); }
+TEST(FuzzPrograms, ch08_command_lines_end_in_status_0_or_2) { fuzz(CH08); }

@@ -100,7 +100,14 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
         s.newton_steps = x.total_steps;
         s.outer_iterations = x.outer;
       } else {
-        s.solution = mortar::solve_frictional_contact(condensed, options);
+        try {
+          s.solution = mortar::solve_frictional_contact(condensed, options);
+        } catch (const std::runtime_error& e) {
+          const double E_nm = r.bodies.body(setup.nonmortar).material.E(), E_m = r.bodies.body(1 - setup.nonmortar).material.E();
+          if (E_nm <= 10 * E_m) throw;
+          throw std::runtime_error(std::string(e.what()) + "; the non-mortar body is " + std::to_string(E_nm / E_m) +
+                                   " times stiffer than the other: make the softer body non-mortar (--nonmortar)");
+        }
         s.newton_steps = s.solution.steps;
       }
       s.u = system.expand(s.solution.u);

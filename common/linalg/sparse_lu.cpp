@@ -42,6 +42,7 @@ double infinity_norm(const SparseMatrix& A) {
 class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
  public:
   double rcond() const { return m_umfpackInfo[UMFPACK_RCOND]; }
+  int status() const { return static_cast<int>(m_umfpackInfo[UMFPACK_STATUS]); }
 };
 #endif
 }  // namespace
@@ -71,6 +72,15 @@ std::string SparseLu::name() {
 void SparseLu::factorize(const SparseMatrix& A) {
   impl_->A = A;
   impl_->lu.compute(impl_->A);
+#ifdef MORTAR_HAVE_UMFPACK
+  // Eigen calls every failure a numerical issue; UMFPACK's status tells a singular matrix from
+  // a factor too large for its 32-bit indices or for the memory.
+  const int status = impl_->lu.status();
+  if (status == UMFPACK_ERROR_out_of_memory)
+    throw std::runtime_error("sparse LU (UMFPACK): out of memory at " + std::to_string(A.rows()) +
+                             " unknowns (its factor outgrew the memory or its 32-bit indices): use fewer levels");
+  if (status < 0) throw std::runtime_error("sparse LU (UMFPACK): failed with status " + std::to_string(status));
+#endif
   if (impl_->lu.info() != Eigen::Success) throw std::runtime_error("sparse LU (" + name() + "): a zero pivot: the matrix is singular");
 #ifdef MORTAR_HAVE_UMFPACK
   if (!(impl_->lu.rcond() > singular_rcond))
