@@ -104,19 +104,6 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
   return r;
 }
 
-namespace {
-// ||a - b|| / ||b|| in L2 for two P1 curves on the same points (exact: h/3 (d0^2 + d0 d1 + d1^2)).
-double relative_l2_difference(const mortar::InterfaceCurve& a, const mortar::InterfaceCurve& b) {
-  double difference = 0, norm = 0;
-  for (std::size_t e = 0; e + 1 < b.x.size(); ++e) {
-    const double h = b.x[e + 1] - b.x[e];
-    const double d0 = a.value[e] - b.value[e], d1 = a.value[e + 1] - b.value[e + 1];
-    difference += h / 3 * (d0 * d0 + d0 * d1 + d1 * d1);
-    norm += h / 3 * (b.value[e] * b.value[e] + b.value[e] * b.value[e + 1] + b.value[e + 1] * b.value[e + 1]);
-  }
-  return norm > 0 ? std::sqrt(difference / norm) : 0.0;
-}
-}  // namespace
 
 HertzStudy run_hertz_study(const HertzOptions& o) {
   HertzStudy study;
@@ -125,7 +112,7 @@ HertzStudy run_hertz_study(const HertzOptions& o) {
       auto& list = basis == Basis::dual ? study.dual : study.standard;
       list.push_back(solve_hertz_level(o, level, basis, list.empty() ? nullptr : &list.back()));
       HertzLevel& r = list.back();
-      if (basis == Basis::dual) r.pressure_difference = relative_l2_difference(r.pressure, study.standard.back().pressure);
+      if (basis == Basis::dual) r.pressure_difference = mortar::relative_l2_difference(r.pressure, study.standard.back().pressure);
       std::printf("hertz level %d, %-8s  dofs=%d  total_force=%.10g  iterations=%d  time_s=%.4g  limit_s=%.4g  "
                   "ratio=%.2f\n",
                   level, basis_name(basis).c_str(), r.dofs, r.total_force, r.iterations, r.timing.time_s,

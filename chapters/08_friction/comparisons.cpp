@@ -82,7 +82,7 @@ std::vector<PathRun> compare_paths(const Options& o, int level) {
     for (std::size_t k = 0; k < closed.value.size(); ++k)
       closed.value[k] = r.last().status[k] != mortar::NodeStatus::open ? 1.0 : 0.0;
     run.contact_half_width = mortar::contact_zone(closed).half_width();
-    run.shear_difference = relative_l2_difference(r.last().shear, standard.last().shear);
+    run.shear_difference = mortar::relative_l2_difference(r.last().shear, standard.last().shear);
     std::printf("path %-34s %2d steps (%3d Newton steps): Q/(F P) = %.4f, stick half-width %.5f m, contact %.5f m, "
                 "shear differs from the first path by %.3g\n",
                 name.c_str(), run.steps, run.newton_steps, run.q_ratio, run.c_h, run.contact_half_width,

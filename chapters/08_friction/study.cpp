@@ -137,17 +137,6 @@ LevelSetup level_setup(const Options& o, int level) {
   return s;
 }
 
-double relative_l2_difference(const mortar::InterfaceCurve& a, const mortar::InterfaceCurve& b) {
-  double difference = 0, norm = 0;
-  for (std::size_t e = 0; e + 1 < b.x.size(); ++e) {
-    const double h = b.x[e + 1] - b.x[e];
-    const double d0 = a.value[e] - b.value[e], d1 = a.value[e + 1] - b.value[e + 1];
-    difference += h / 3 * (d0 * d0 + d0 * d1 + d1 * d1);
-    norm += h / 3 * (b.value[e] * b.value[e] + b.value[e] * b.value[e + 1] + b.value[e + 1] * b.value[e + 1]);
-  }
-  return norm > 0 ? std::sqrt(difference / norm) : 0.0;
-}
-
 double stick_slip_point(const FrictionalLevel& r) {
   const mortar::ContactZone z = stick_zone(r.last());
   return z.empty ? 0.0 : 0.5 * (z.right_active + z.right_inactive);
@@ -205,7 +194,7 @@ std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const Friction
       c.slip_nodes += st == mortar::NodeStatus::slip;
     }
     c.c_h = stick_zone(s).half_width();
-    c.pressure_change_rel_l2 = relative_l2_difference(s.pressure, normal.pressure);
+    c.pressure_change_rel_l2 = mortar::relative_l2_difference(s.pressure, normal.pressure);
     // Q of the normal step is round-off (of either sign): Cattaneo-Mindlin at Q = 0 is Hertz
     const double FP = o.friction * c.P, Q = std::fabs(c.Q) <= 1e-9 * FP ? 0.0 : c.Q;
     if (c.P > 0 && Q >= 0 && Q <= FP) {

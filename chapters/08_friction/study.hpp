@@ -57,7 +57,4 @@ void write_cattaneo_csv(const std::string& path, const std::vector<CattaneoStep>
 // The residual and the stick and slip counts after every Newton step of every load step.
 void write_newton_csv(const std::string& path, const FrictionalLevel& r);
 
-// ||a - b|| / ||b|| in L2 for two nodal curves on the same points (P1 between them)
-double relative_l2_difference(const mortar::InterfaceCurve& a, const mortar::InterfaceCurve& b);
-
 }  // namespace chapter08

@@ -143,4 +143,16 @@ ContactZone contact_zone(const InterfaceCurve& p) {
   return z;
 }
 
+double relative_l2_difference(const InterfaceCurve& a, const InterfaceCurve& b) {
+  if (a.x.size() != b.x.size()) throw std::invalid_argument("relative_l2_difference: the curves have different points");
+  double difference = 0, norm = 0;
+  for (std::size_t e = 0; e + 1 < b.x.size(); ++e) {
+    const double h = b.x[e + 1] - b.x[e];
+    const double d0 = a.value[e] - b.value[e], d1 = a.value[e + 1] - b.value[e + 1];
+    difference += h / 3 * (d0 * d0 + d0 * d1 + d1 * d1);
+    norm += h / 3 * (b.value[e] * b.value[e] + b.value[e] * b.value[e + 1] + b.value[e + 1] * b.value[e + 1]);
+  }
+  return norm > 0 ? std::sqrt(difference / norm) : 0.0;
+}
+
 }  // namespace mortar

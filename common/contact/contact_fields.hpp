@@ -56,6 +56,9 @@ double total_contact_force(const ContactInterface& gamma, const Constraints& c,
 // for a polynomial exact function of degree 3 or less).
 double l2_error(const InterfaceCurve& curve, const std::function<double(double)>& exact);
 double l2_norm(const InterfaceCurve& curve, const std::function<double(double)>& exact_for_grid);
+// ||a - b|| / ||b|| in L2 for two P1 curves on the same points (exact: h/3 (d0^2 + d0 d1 + d1^2)
+// per piece); 0 when b is zero.
+double relative_l2_difference(const InterfaceCurve& a, const InterfaceCurve& b);
 
 // The contact zone read off a nodal pressure: the outermost nodes with p > 0 on each side and
 // their first neighbours with p = 0. The half-width estimate puts each edge of the zone at
