@@ -33,12 +33,6 @@ std::vector<mortar::NodalUnknowns> glued_start(int nodes) {
   for (auto& n : x) n.lambda_n = 1;
   return x;
 }
-
-// The row coefficients as a curve on the non-mortar trace (zero on dropped rows).
-mortar::InterfaceCurve nodal_curve(const mortar::ContactInterface& gamma, const mortar::Constraints& c,
-                                   const Eigen::VectorXd& coefficients) {
-  return mortar::contact_pressure(gamma, c, coefficients);
-}
 }  // namespace
 
 FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& scene, const mortar::Material& body1,
@@ -115,8 +109,8 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
       options.start = s.solution.nodes;
       for (auto& n : options.start) n.dw_t = 0;
       // 8. What the step says on Gamma_c.
-      s.pressure = nodal_curve(r.gamma, r.normal, s.solution.lambda_n);
-      s.shear = nodal_curve(r.gamma, r.normal, s.solution.lambda_t);
+      s.pressure = mortar::contact_pressure(r.gamma, r.normal, s.solution.lambda_n);
+      s.shear = mortar::contact_pressure(r.gamma, r.normal, s.solution.lambda_t);  // the same reading
       s.normal_force = mortar::total_contact_force(r.gamma, r.normal, s.solution.lambda_n);
       s.shear_force = mortar::total_contact_force(r.gamma, r.normal, s.solution.lambda_t);
       s.status.assign(s.pressure.x.size(), mortar::NodeStatus::open);

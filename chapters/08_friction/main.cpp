@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "common/study/timing_report.hpp"
 #include "comparisons.hpp"
 #include "figures.hpp"
 #include "study.hpp"
@@ -54,9 +55,8 @@ int main(int argc, char** argv) {
         .set("newton_steps_total", f.newton_steps_total())
         .set("lu_steps", f.lu_steps_total())
         .set("load_steps", static_cast<int>(f.steps.size()))
-        .set("limit_ratio", f.time_s / f.limit_s)
-        .set("limit_s", f.limit_s)
         .set("time_per_newton_step_limit_ratio", f.time_s / f.newton_steps_total() / f.limit_s);
+    mortar::add_timing(results, f.timing);  // limit_ratio, limit_s, spreads, memory peaks
     if (o.scene == "manufactured") {
       for (const std::string key : {"err_energy", "err_l2", "err_pressure", "err_tangential"})
         results.set(key, table.column(key).back());
