@@ -31,13 +31,13 @@ while [[ $# -gt 0 ]]; do
 done
 [[ -z "$threads" || "$threads" =~ ^[1-9][0-9]*$ ]] || { echo "speed_table.sh: --threads must be a positive integer" >&2; exit 2; }
 for p in ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching ch05_unilateral_uzawa ch06_dual_mortar \
-         ch07_quadratic_elements; do
+         ch07_quadratic_elements ch08_friction; do
   [[ -x "build/$p" ]] || { echo "speed_table.sh: build/$p is missing: build first (bash course.sh run)" >&2; exit 2; }
 done
 
 # One row per run: the program and its options (always --no-plot; chapters 5 and 6 also
 # --no-compare, chapter 6 --no-hertz: its bilateral study alone; chapter 7 --no-p1: its P2
-# study alone).
+# study alone; chapter 8 --no-compare: its convergence study alone, Coulomb and Tresca).
 runs=(
   "ch02_p1_triangles"
   "ch03_pointwise_matching"
@@ -64,6 +64,8 @@ if [[ $quick == 0 ]]; then
     "ch05_unilateral_uzawa --no-compare --levels 7 --matching pointwise"
     "ch06_dual_mortar --no-compare --no-hertz --levels 7"
     "ch07_quadratic_elements --no-p1 --levels 7"
+    "ch08_friction --no-compare"
+    "ch08_friction --no-compare --law tresca"
   )
 fi
 
