@@ -229,8 +229,10 @@ FrictionSolution solve_frictional_contact(const CondensedContact& c, const Frict
         v = lu.solve(b);
         ++sol.lu_steps;
       } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("frictional Newton, step ") + std::to_string(step) + ": " + e.what() +
-                                 " (does every node slip? then friction cannot hold the load: gross sliding)");
+        const std::string what = e.what();
+        const bool singular = what.find("singular") != std::string::npos;
+        throw std::runtime_error("frictional Newton, step " + std::to_string(step) + ": " + what +
+                                 (singular ? " (does every node slip? then friction cannot hold the load: gross sliding)" : ""));
       }
     }
     sol.steps = step;

@@ -37,9 +37,13 @@ double infinity_norm(const SparseMatrix& A) {
 }
 
 #ifdef MORTAR_HAVE_UMFPACK
+// UMFPACK with 64-bit indices (umfpack_dl): its 32-bit version counts its memory in int and
+// ran out at 1.65M unknowns (chapter 8, h2/h1 = 1/10) on a machine with 24 GB. The matrix is
+// copied with long indices once per factorization, a small cost beside the factor.
+using LongMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>;
 // UMFPACK's own estimate of the reciprocal condition (min |U_ii| / max |U_ii|), which Eigen
 // keeps but does not show.
-class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
+class UmfPackLU : public Eigen::UmfPackLU<LongMatrix> {
  public:
   double rcond() const { return m_umfpackInfo[UMFPACK_RCOND]; }
   int status() const { return static_cast<int>(m_umfpackInfo[UMFPACK_STATUS]); }
@@ -50,6 +54,7 @@ class UmfPackLU : public Eigen::UmfPackLU<SparseMatrix> {
 struct SparseLu::Impl {
   SparseMatrix A;  // kept for the backward error of each solve
 #ifdef MORTAR_HAVE_UMFPACK
+  LongMatrix A_long;
   UmfPackLU lu;
 #else
   Eigen::SparseLU<SparseMatrix> lu;
@@ -71,7 +76,12 @@ std::string SparseLu::name() {
 
 void SparseLu::factorize(const SparseMatrix& A) {
   impl_->A = A;
+#ifdef MORTAR_HAVE_UMFPACK
+  impl_->A_long = A;  // kept: Eigen's wrapper points into it
+  impl_->lu.compute(impl_->A_long);
+#else
   impl_->lu.compute(impl_->A);
+#endif
 #ifdef MORTAR_HAVE_UMFPACK
   // Eigen calls every failure a numerical issue; UMFPACK's status tells a singular matrix from
   // a factor too large for its 32-bit indices or for the memory.
