@@ -138,7 +138,7 @@ TEST_F(OptionsDeathTest, a_refused_out_keeps_the_users_dangling_or_looping_link)
   std::filesystem::create_directories(base);
   std::filesystem::create_symlink(base / "nowhere" / "at_all", base / "dangling");
   std::filesystem::create_symlink(base / "loop", base / "loop");
-  for (const std::filesystem::path link : {base / "dangling", base / "loop" / "sub"}) {
+  for (const std::filesystem::path& link : {base / "dangling", base / "loop" / "sub"}) {
     OptionParser p("demo", "a demo");
     EXPECT_EXIT(prepare_output_folder(p, link.string()), ::testing::ExitedWithCode(2), ::testing::HasSubstr("--out"));
   }
@@ -173,4 +173,50 @@ TEST(Options, preparing_the_output_folder_removes_the_previous_results) {
   EXPECT_FALSE(std::filesystem::exists(folder / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(folder / "figure.png"));  // only the files that claim a result
   std::filesystem::remove_all(folder);
+}
+
+// A rerun removes exactly what the previous run wrote (.outputs), so a part it skips leaves no
+// stale file, and a user's own file in the folder stays. The list is written when the program
+// ends: here by a child process that prepares the folder, writes two files and exits.
+TEST(PrepareOutputFolder, a_rerun_removes_the_previous_runs_files_and_nothing_else) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "options_outputs";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "mine.txt") << "the user's";
+  EXPECT_EXIT(
+      {
+        OptionParser p("demo", "a demo");
+        prepare_output_folder(p, dir.string());
+        std::ofstream(dir / "hertz.csv") << "1\n";
+        fs::create_directories(dir / "sub");
+        std::ofstream(dir / "sub" / "deep.dat") << "2\n";
+        std::exit(0);
+      },
+      ::testing::ExitedWithCode(0), "");
+  ASSERT_TRUE(fs::exists(dir / ".outputs"));
+  EXPECT_TRUE(fs::exists(dir / "hertz.csv"));
+  // the rerun writes nothing: the previous run's files go, the user's stays
+  OptionParser p("demo", "a demo");
+  prepare_output_folder(p, dir.string());
+  EXPECT_FALSE(fs::exists(dir / "hertz.csv"));
+  EXPECT_FALSE(fs::exists(dir / "sub" / "deep.dat"));
+  EXPECT_TRUE(fs::exists(dir / "mine.txt"));
+  EXPECT_FALSE(fs::exists(dir / ".outputs"));
+  fs::remove_all(dir);
+}
+
+// A list that names something outside the folder, or a link, removes nothing there.
+TEST(PrepareOutputFolder, the_list_never_reaches_outside_the_folder_or_through_a_link) {
+  namespace fs = std::filesystem;
+  const fs::path base = fs::temp_directory_path() / "options_outside";
+  fs::remove_all(base);
+  fs::create_directories(base / "out");
+  std::ofstream(base / "precious.txt") << "keep";
+  fs::create_symlink(base / "precious.txt", base / "out" / "link.csv");
+  std::ofstream(base / "out" / ".outputs") << "../precious.txt\n" << (base / "precious.txt").string() << "\nlink.csv\n";
+  remove_previous_outputs((base / "out").string());
+  EXPECT_TRUE(fs::exists(base / "precious.txt"));
+  EXPECT_TRUE(fs::is_symlink(base / "out" / "link.csv"));
+  fs::remove_all(base);
 }

@@ -742,3 +742,27 @@ TEST(Programs, ch08_errors_do_not_depend_on_the_unit_of_length) {
     EXPECT_NEAR(tangential[k] / tangential[0], 1.0, 1e-5);
   }
 }
+
+// A rerun into the same folder leaves none of the earlier run's files that it did not write
+// itself (hertz.csv after --no-hertz, standard.csv after --no-compare, p1.csv after --no-p1,
+// Cattaneo's files after the manufactured scene), and keeps a file of the user's.
+TEST(Programs, a_rerun_leaves_no_stale_file_of_a_part_it_skips) {
+  struct Case {
+    std::string program, first, second;
+    std::vector<std::string> stale;
+  };
+  const std::vector<Case> cases = {
+      {CH06, "--quick", "--quick --no-hertz --no-compare", {"hertz.csv", "standard.csv", "hertz_pressure.png"}},
+      {CH07, "--quick", "--quick --no-p1", {"p1.csv"}},
+      {CH08, "--scene cattaneo --n0 8 --levels 3 --load-steps 2", "--quick --no-compare", {"cattaneo.csv", "paths.csv"}}};
+  for (const Case& c : cases) {
+    const std::string dir = out_dir("rerun");
+    ASSERT_EQ(run(c.program + " " + c.first + " --out " + dir).status, 0) << c.first;
+    for (const std::string& f : c.stale) ASSERT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;
+    std::ofstream(dir + "/notes_of_mine.txt") << "keep";
+    ASSERT_EQ(run(c.program + " " + c.second + " --out " + dir).status, 0) << c.second;
+    for (const std::string& f : c.stale) EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << c.program << ": " << f;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/summary.json"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/notes_of_mine.txt"));
+  }
+}

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace mortar {
@@ -256,6 +257,81 @@ void prepare_output_folder(const OptionParser& parser, const std::string& folder
     fs::remove(fs::path(folder) / name, ec);
     if (fs::exists(fs::path(folder) / name)) refuse("cannot remove the previous run's " + std::string(name) + " in '" + folder + "'");
   }
+  // Nor may the files of a part this run skips (chapter 6's hertz.csv after --no-hertz): remove
+  // what the previous run listed as its own, and list this run's at its end.
+  remove_previous_outputs(folder);
+  record_outputs_at_exit(folder);
+}
+
+namespace {
+constexpr const char* manifest_name = ".outputs";
+
+// Regular files below folder (links not followed), as paths relative to it.
+std::vector<std::string> regular_files(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && !it->is_symlink(ec) && it->path().filename() != manifest_name)
+      out.push_back(fs::relative(it->path(), folder, ec).generic_string());
+  return out;
+}
+
+// The folder and what was in it when the run began (each file's modification time), for the
+// list written when the program ends: new files, and files written since. (Not "written after
+// the start time": the kernel stamps files with a coarse clock that can lag the one a program
+// reads by milliseconds.)
+struct RunOutputs {
+  std::filesystem::path folder;
+  std::map<std::string, std::filesystem::file_time_type> before;
+};
+RunOutputs& run_outputs() {
+  static RunOutputs outputs;
+  return outputs;
+}
+}  // namespace
+
+void remove_previous_outputs(const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path manifest = fs::path(folder) / manifest_name;
+  if (fs::symlink_status(manifest, ec).type() != fs::file_type::regular) return;
+  std::ifstream in(manifest);
+  for (std::string name; std::getline(in, name);) {
+    // only plain relative paths inside the folder, and only regular files: never a link, never
+    // anything outside
+    const fs::path relative(name);
+    if (name.empty() || relative.is_absolute() || name.find("..") != std::string::npos) continue;
+    const fs::path p = fs::path(folder) / relative;
+    if (fs::symlink_status(p, ec).type() == fs::file_type::regular) fs::remove(p, ec);
+  }
+  in.close();
+  fs::remove(manifest, ec);
+}
+
+void record_outputs_at_exit(const std::string& folder) {
+  namespace fs = std::filesystem;
+  RunOutputs& r = run_outputs();
+  std::error_code ec;
+  r.folder = fs::absolute(folder);
+  r.before.clear();
+  for (const std::string& name : regular_files(r.folder)) r.before[name] = fs::last_write_time(r.folder / name, ec);
+  static bool registered = false;
+  if (registered) return;
+  registered = true;
+  std::atexit([] {
+    const RunOutputs& o = run_outputs();
+    std::error_code ec;
+    std::vector<std::string> ours;
+    for (const std::string& name : regular_files(o.folder)) {
+      const auto written = fs::last_write_time(o.folder / name, ec);
+      const auto it = o.before.find(name);
+      if (!ec && (it == o.before.end() || it->second != written)) ours.push_back(name);
+    }
+    if (ours.empty()) return;
+    std::ofstream out(o.folder / manifest_name);
+    for (const std::string& name : ours) out << name << "\n";
+  });
 }
 
 }  // namespace mortar

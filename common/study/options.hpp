@@ -96,4 +96,11 @@ bool parse_number(const std::string& text, double& value);
 // so that a run that fails later does not leave them looking like its own.
 void prepare_output_folder(const OptionParser& parser, const std::string& folder);
 
+// The files a run writes into its output folder are listed in FOLDER/.outputs when the program
+// ends (the regular files written since the folder was prepared). The next run into the folder
+// removes exactly those before it starts, so a part it skips leaves no stale file, and nothing
+// the program did not write is touched. prepare_output_folder calls both.
+void remove_previous_outputs(const std::string& folder);
+void record_outputs_at_exit(const std::string& folder);
+
 }  // namespace mortar
