@@ -766,3 +766,33 @@ TEST(Programs, a_rerun_leaves_no_stale_file_of_a_part_it_skips) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/notes_of_mine.txt"));
   }
 }
+
+// No program prints nan or inf where a value is undefined or out of range: chapter 1's H1 rate
+// of an edge trace (no H1 column), chapter 6 at E = 1e300 (squares of the pressure overflowed),
+// chapter 7 when P2 never reaches P1's finest error. Chapter 6's relative errors at E = 1e300
+// are those at E = 1.
+TEST(Programs, undefined_values_are_said_not_printed_as_nan_or_inf) {
+  const std::regex bad(R"((^|[^A-Za-z])(nan|NaN|NAN|inf|Inf|INF)([^A-Za-z]|$))");
+  struct Case {
+    std::string command, must_say;
+  };
+  const std::string d1 = out_dir("undefined_ch01"), d6 = out_dir("undefined_ch06"), d6b = out_dir("undefined_ch06_E1"), d7 = out_dir("undefined_ch07");
+  const std::vector<Case> cases = {
+      {std::string(CH01) + " --trace edge --quick --no-plot --out " + d1, "H1 undefined"},
+      {std::string(CH06) + " --quick --no-plot --E1 1e300 --E2 1e300 --out " + d6, ""},
+      {std::string(CH07) + " --n0 2 --levels 3 --no-plot --matching pointwise --h-ratio 1/10 --out " + d7,
+       "P2 does not reach it"}};
+  for (const Case& c : cases) {
+    const ProgramRun r = run(c.command);
+    ASSERT_EQ(r.status, 0) << c.command << "\n" << r.output;
+    EXPECT_FALSE(std::regex_search(r.output, bad)) << c.command << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.must_say), std::string::npos) << c.command;
+  }
+  for (const char* f : {"/convergence.csv", "/hertz.csv"}) EXPECT_FALSE(std::regex_search(file_text(d6 + f), bad)) << f;
+  ASSERT_EQ(run(std::string(CH06) + " --quick --no-plot --E1 1 --E2 1 --out " + d6b).status, 0);
+  for (const char* column : {"err_energy", "err_pressure", "err_pressure_function"}) {
+    const auto big = csv_column(d6 + "/convergence.csv", column), unit = csv_column(d6b + "/convergence.csv", column);
+    ASSERT_EQ(big.size(), unit.size());
+    for (std::size_t k = 0; k < big.size(); ++k) EXPECT_NEAR(big[k] / unit[k], 1.0, 1e-9) << column << " level " << k;
+  }
+}

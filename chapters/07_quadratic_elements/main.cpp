@@ -100,7 +100,12 @@ int main(int argc, char** argv) {
                 study.patch_integral.rel_error, study.patch_pointwise.rel_error);
     std::printf("finest level: %d dofs, %.3f s, %.2f x the physical limit (%.3f s)\n", finest.bodies.num_dofs(),
                 finest.time_s, finest.time_s / finest.limit_s, finest.limit_s);
-    if (p1) {
+    if (p1 && std::isnan(equal.p2_dofs)) {
+      // P2's levels all stay above P1's finest error: there is nothing to interpolate
+      std::printf("P1's finest energy error %.3e takes P1 %.0f unknowns; P2 does not reach it within the levels run "
+                  "(its finest error is %.3e): add levels to compare the cost at equal error\n",
+                  equal.error, equal.p1_dofs, study.table.column("err_energy").back());
+    } else if (p1) {
       const chapter07::EqualError& e = equal;
       std::printf("P1's finest energy error %.3e takes P1 %.0f unknowns and %.2f units of time; P2 %.0f unknowns "
                   "(%.1f x fewer) and %.3f units (%.1f x less); unit: the finest P1 level's limit\n",

@@ -145,12 +145,17 @@ ContactZone contact_zone(const InterfaceCurve& p) {
 
 double relative_l2_difference(const InterfaceCurve& a, const InterfaceCurve& b) {
   if (a.x.size() != b.x.size()) throw std::invalid_argument("relative_l2_difference: the curves have different points");
+  // values divided by the largest before squaring: any unit of stress, up to 1e300 Pa
+  double scale = 0;
+  for (std::size_t k = 0; k < b.x.size(); ++k) scale = std::max({scale, std::fabs(a.value[k]), std::fabs(b.value[k])});
+  if (!(scale > 0)) return 0.0;
   double difference = 0, norm = 0;
   for (std::size_t e = 0; e + 1 < b.x.size(); ++e) {
     const double h = b.x[e + 1] - b.x[e];
-    const double d0 = a.value[e] - b.value[e], d1 = a.value[e + 1] - b.value[e + 1];
+    const double d0 = (a.value[e] - b.value[e]) / scale, d1 = (a.value[e + 1] - b.value[e + 1]) / scale;
+    const double b0 = b.value[e] / scale, b1 = b.value[e + 1] / scale;
     difference += h / 3 * (d0 * d0 + d0 * d1 + d1 * d1);
-    norm += h / 3 * (b.value[e] * b.value[e] + b.value[e] * b.value[e + 1] + b.value[e + 1] * b.value[e + 1]);
+    norm += h / 3 * (b0 * b0 + b0 * b1 + b1 * b1);
   }
   return norm > 0 ? std::sqrt(difference / norm) : 0.0;
 }

@@ -75,17 +75,24 @@ double l2_error(const BrokenCurve& lambda_h, const std::function<double(double)>
   // 4 pieces per element, 5 Gauss points each: p may have a kink inside an element.
   static const SegmentRule rule = gauss_legendre(5);
   constexpr int pieces = 4;
-  double sum = 0;
+  // the differences first, then their squares divided by the largest: pressures of 1e300 Pa
+  // would overflow when squared (the relative error means the same in any unit of stress)
+  std::vector<double> d, weight;
   for (std::size_t e = 0; e + 1 < lambda_h.x.size(); ++e) {
     const double a = lambda_h.x[e], h = lambda_h.x[e + 1] - a;
     for (int piece = 0; piece < pieces; ++piece)
       for (std::size_t q = 0; q < rule.points.size(); ++q) {
         const double s = (piece + rule.points[q]) / pieces;
-        const double d = lambda_h(static_cast<int>(e), s) - p(a + s * h);
-        sum += rule.weights[q] * h / pieces * d * d;
+        d.push_back(lambda_h(static_cast<int>(e), s) - p(a + s * h));
+        weight.push_back(rule.weights[q] * h / pieces);
       }
   }
-  return std::sqrt(sum);
+  double scale = 0;
+  for (double v : d) scale = std::max(scale, std::fabs(v));
+  if (!(scale > 0)) return 0.0;
+  double sum = 0;
+  for (std::size_t k = 0; k < d.size(); ++k) sum += weight[k] * (d[k] / scale) * (d[k] / scale);
+  return scale * std::sqrt(sum);
 }
 
 }  // namespace mortar
