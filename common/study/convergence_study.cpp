@@ -110,12 +110,18 @@ void ConvergenceTable::print_local_rates() const {
   std::printf("local rates, level k-1 to k:\n  %5s %10s", "k", "h");
   for (std::size_t c = 1; c < local.columns_.size(); ++c) std::printf(" %*s", std::max<int>(8, local.columns_[c].size() - 4), local.columns_[c].substr(4).c_str());
   std::printf("\n");
+  bool undefined = false;
   for (std::size_t k = 0; k < local.rows_.size(); ++k) {
     std::printf("  %5zu %10.4g", k + 1, local.rows_[k][0]);
-    for (std::size_t c = 1; c < local.columns_.size(); ++c)
-      std::printf(" %*.3f", std::max<int>(8, local.columns_[c].size() - 4), local.rows_[k][c]);
+    for (std::size_t c = 1; c < local.columns_.size(); ++c) {
+      const int width = std::max<int>(8, local.columns_[c].size() - 4);
+      if (std::isnan(local.rows_[k][c])) std::printf(" %*s", width, "-");
+      else std::printf(" %*.3f", width, local.rows_[k][c]);
+      undefined = undefined || std::isnan(local.rows_[k][c]);
+    }
     std::printf("\n");
   }
+  if (undefined) std::printf("  (-: undefined, an error of zero on one of the two levels)\n");
   std::fflush(stdout);
 }
 
