@@ -134,6 +134,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
                                                       mortar::machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
+  mortar::note_nearly_incompressible(o);
 }
 
 mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver, bool accelerate) {

@@ -113,6 +113,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   const std::string memory = mortar::memory_shortfall(dofs, bytes_per_dof, mortar::machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
+  mortar::note_nearly_incompressible(o);
 }
 
 SceneParameters scene_parameters(const Options& o) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 #include <limits>
 
 #include "common/linalg/memory_estimate.hpp"
@@ -84,6 +85,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   const std::string memory = memory_shortfall(size.dofs(), bytes_per_dof_single_solve, machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
   prepare_output_folder(parser, o.out);
+  note_nearly_incompressible(o);
 }
 
 ManufacturedContact manufactured_solution(const BilateralStudyOptions& o) {
@@ -119,6 +121,16 @@ void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, 
         parser.fail("L", message);
       }
     }
+}
+
+void note_nearly_incompressible(const TwoBodyOptions& o) {
+  for (const auto& [body, nu, E] : {std::tuple<int, double, double>{1, o.nu1, o.E1}, {2, o.nu2, o.E2}}) {
+    if (nu <= 0.49) continue;
+    const Material m(E, nu);
+    std::printf("note: nu%d = %g is close to 1/2, where %s locks (lambda / mu = %.3g): expect the L2 error and "
+                "the contact pressure to suffer (chapter 2's notes; README.md, \"Hard cases\")\n",
+                body, nu, o.degree == 2 ? "P2" : "P1", m.lambda() / m.mu());
+  }
 }
 
 TwoBodyGeometry two_body_geometry(const TwoBodyOptions& o, int n1, double aspect) {

@@ -57,6 +57,9 @@ ManufacturedContact manufactured_solution(const BilateralStudyOptions& o);
 // 20:1 either way, whether from --aspect or from --L against --H1/--H2 (beyond it the solves
 // stop converging and say nothing).
 void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect);
+// A note on stdout when a body is nearly incompressible (nu > 0.49), where P1 locks: the run
+// goes on (chapter 2 shows locking on purpose), but nobody should read its pressure unwarned.
+void note_nearly_incompressible(const TwoBodyOptions& o);
 
 // Meshes with n1 body-1 elements along Gamma_c: n2 = max(2, round(n1 / h_ratio)), m_l rows
 // with cells of width / height = aspect. Chapters 3-5 all build their levels this way.
