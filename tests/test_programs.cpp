@@ -810,3 +810,12 @@ TEST(Programs, nearly_incompressible_bodies_are_noted) {
     EXPECT_EQ(plain.output.find("locks"), std::string::npos) << program;
   }
 }
+
+// Chapter 5 accepts |delta| < H1, and says so when the strain is no longer small (99.9%).
+TEST(Programs, ch05_a_large_compression_is_noted) {
+  const std::string dir = out_dir("ch05_large_delta");
+  const ProgramRun r = run(std::string(CH05) + " --quick --no-plot --no-compare --delta 0.999 --out " + dir);
+  EXPECT_NE(r.output.find("compresses body 1 by 99.9% of its height"), std::string::npos) << r.output;
+  const ProgramRun small = run(std::string(CH05) + " --quick --no-plot --no-compare --out " + dir);
+  EXPECT_EQ(small.output.find("compresses body 1"), std::string::npos);
+}

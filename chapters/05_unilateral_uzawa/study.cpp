@@ -135,6 +135,12 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
   mortar::note_nearly_incompressible(o);
+  // accepted (|delta| < H1), but a strain of more than a few percent is not the small strain
+  // linear elasticity assumes
+  if ((o.scene == "hertz" || o.scene == "partial") && std::fabs(o.delta) > 0.05 * o.H1)
+    std::printf("note: delta = %g m compresses body 1 by %.3g%% of its height: linear elasticity assumes small "
+                "strains, so read the answer as that model's, not as the bodies'\n",
+                o.delta, 100 * std::fabs(o.delta) / o.H1);
 }
 
 mortar::ContactSolverOptions solver_options(const Options& o, const std::string& solver, bool accelerate) {
