@@ -541,8 +541,9 @@ TEST(Programs, a_tiny_address_space_is_refused_not_a_hang) {
 
 // --quick sets --n0 and --levels: an explicit value beside it is refused, not silently replaced.
 TEST(Programs, quick_with_an_explicit_size_is_refused) {
-  for (const char* program : {CH02, CH03, CH04, CH05})
+  for (const char* program : {CH01, CH02, CH03, CH04, CH05, CH08})
     for (const std::string option : {"n0", "levels"}) {
+      if (program == std::string(CH01) && option == "n0") continue;  // chapter 1's --quick sets levels only
       const std::string dir = out_dir("quick_refused");
       const ProgramRun r = run(std::string(program) + " --quick --" + option + " 4 --no-plot --out " + dir);
       EXPECT_EQ(r.status, 2) << program << " --" << option << "\n" << r.output;
@@ -818,4 +819,18 @@ TEST(Programs, ch05_a_large_compression_is_noted) {
   EXPECT_NE(r.output.find("compresses body 1 by 99.9% of its height"), std::string::npos) << r.output;
   const ProgramRun small = run(std::string(CH05) + " --quick --no-plot --no-compare --out " + dir);
   EXPECT_EQ(small.output.find("compresses body 1"), std::string::npos);
+}
+
+// Parser messages that name the real problem: an integer out of range is out of range (not
+// "expects an integer"), and "--=3" has no option name.
+TEST(Programs, parser_messages_name_the_real_problem) {
+  const std::string dir = out_dir("parser_messages");
+  const ProgramRun big = run(std::string(CH04) + " --n0 2147483647 --no-plot --out " + dir);
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.output.find("--n0: must be in"), std::string::npos) << big.output;
+  EXPECT_EQ(big.output.find("expects an integer"), std::string::npos) << big.output;
+  const ProgramRun unnamed = run(std::string(CH04) + " --=3 --no-plot --out " + dir);
+  EXPECT_EQ(unnamed.status, 2);
+  EXPECT_NE(unnamed.output.find("has no option name"), std::string::npos) << unnamed.output;
+  EXPECT_FALSE(std::filesystem::exists(dir));
 }

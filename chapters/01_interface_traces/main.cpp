@@ -59,13 +59,13 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
   parser.add_string("out", o.out, "output folder");
-  parser.add_flag("quick", o.quick, "small sizes for tests (sets levels = 4)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets levels = 4; not with --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.add_flag("profile", o.profile, "print where the finest level's time goes, beside the limit's (and write profile.csv)");
   parser.add_int("threads", o.threads, mortar::solver_threads_help, mortar::Range::closed(1, 64));
   parser.parse(argc, argv);
   mortar::set_solver_threads(o.threads);
-  if (o.quick) o.levels = 4;
+  parser.apply_quick(o.quick, {{"levels", o.levels, 4}});  // refuses --levels beside --quick
   if (static_cast<long long>(o.n0) << (o.levels - 1) > max_side1_elements)
     parser.fail("levels", "the finest level would have more than " +
                               std::to_string(max_side1_elements) + " side-1 elements");

@@ -78,9 +78,9 @@ void OptionParser::add_int(const std::string& name, int& target, const std::stri
   Option o{name, help, false, true, nullptr, nullptr};
   o.set = [&target, range](const std::string& text) -> std::string {
     double v = 0;
-    if (!parse_plain(text, v) || v != std::floor(v) || std::fabs(v) > 1e9)
-      return "expects an integer, got '" + text + "'";
-    if (!range.contains(v)) return "must be " + range.describe() + ", got " + text;
+    if (!parse_plain(text, v) || v != std::floor(v)) return "expects an integer, got '" + text + "'";
+    // an integer beyond the range is out of range, whatever its size (2147483647 included)
+    if (!range.contains(v) || std::fabs(v) > 1e9) return "must be " + range.describe() + ", got " + text;
     target = static_cast<int>(v);
     return "";
   };
@@ -165,6 +165,10 @@ void OptionParser::parse(int argc, const char* const* argv) {
     if (inline_value) {
       value = name.substr(name.find('=') + 1);
       name = name.substr(0, name.find('='));
+      if (name.empty()) {
+        std::cerr << program_ << ": '" << arg << "' has no option name before '=' (write --name=value)\n";
+        std::exit(2);
+      }
     }
     if (name == "help") {
       std::cout << usage();
