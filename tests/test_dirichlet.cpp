@@ -44,3 +44,24 @@ TEST(Dirichlet, rejects_out_of_range_dofs) {
   DirichletData data{{7}, {0.0}};
   EXPECT_THROW(eliminate_dirichlet(K, Eigen::VectorXd::Zero(4), data), std::invalid_argument);
 }
+
+// New loads and values on the same prescribed dofs: the rhs of a fresh elimination, K_ff kept;
+// a different set of prescribed dofs is refused.
+TEST(Dirichlet, update_loads_equals_a_fresh_elimination) {
+  RectangleSpec s;
+  s.nx = 5; s.ny = 4;
+  const Mesh mesh = rectangle_mesh(s);
+  const SparseMatrix K = assemble_stiffness(mesh, Material(1, 0.3));
+  DirichletData first, second;
+  prescribe_on_sides(first, mesh, {Side::bottom}, [](const Eigen::Vector2d&) { return Eigen::Vector2d(0, 0); });
+  prescribe_on_sides(second, mesh, {Side::bottom}, [](const Eigen::Vector2d& p) { return Eigen::Vector2d(0.1 * p.x(), -0.2); });
+  const Eigen::VectorXd F1 = Eigen::VectorXd::Zero(mesh.num_dofs()), F2 = Eigen::VectorXd::LinSpaced(mesh.num_dofs(), -1, 1);
+  ReducedSystem updated = eliminate_dirichlet(K, F1, first);
+  update_loads(updated, K, F2, second);
+  const ReducedSystem fresh = eliminate_dirichlet(K, F2, second);
+  EXPECT_LT((updated.rhs - fresh.rhs).norm(), 1e-14 * fresh.rhs.norm());
+  EXPECT_EQ((updated.prescribed - fresh.prescribed).norm(), 0.0);
+  DirichletData other;
+  prescribe_on_sides(other, mesh, {Side::top}, [](const Eigen::Vector2d&) { return Eigen::Vector2d(0, 0); });
+  EXPECT_THROW(update_loads(updated, K, F2, other), std::invalid_argument);
+}

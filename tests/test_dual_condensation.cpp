@@ -166,3 +166,15 @@ TEST(SpdSolverRefactorize, reuses_the_analysis_for_new_values_on_the_same_patter
   SpdSolver never;
   EXPECT_THROW(never.refactorize(K), std::logic_error);
 }
+
+// A load path condenses once: new loads through update_condensed_loads give the r and g of a
+// condensation from scratch, since T and A do not depend on the loads.
+TEST(DualCondensation, new_loads_on_the_same_rows_equal_a_fresh_condensation) {
+  const Built a = pressed(12, 1.5, 0.01, 1.0, true), b = pressed(12, 1.5, 0.03, 1.0, true);
+  CondensedContact updated = condense_contact(a.problem);
+  update_condensed_loads(updated, b.problem.K, b.problem.f, b.problem.G);
+  const CondensedContact fresh = condense_contact(b.problem);
+  EXPECT_LT((updated.rhs - fresh.rhs).norm(), 1e-13 * fresh.rhs.norm());
+  EXPECT_LT((updated.g - fresh.g).norm(), 1e-13 * fresh.g.norm());
+  EXPECT_GT((condense_contact(a.problem).rhs - fresh.rhs).norm(), 0.01 * fresh.rhs.norm());  // the loads differ (by 20%)
+}

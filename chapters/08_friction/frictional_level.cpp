@@ -77,15 +77,23 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
         if (status == mortar::NodeStatus::slip) x.lambda_t = sign * beyond;
       }
     }
+    // 6. Dirichlet elimination, both sets of rows on the free dofs, stacked, condensed: the
+    //    pivots (both dofs of each non-mortar node) become w_n and w_t. Done once: the load path
+    //    changes the loads and the prescribed values, not K_ff, T or A = T^T K T.
+    mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, first->F, first->dirichlet);
+    const mortar::SaddlePointProblem pn = mortar::reduce_to_free_dofs(system, r.normal, G);
+    const mortar::SaddlePointProblem pt = mortar::reduce_to_free_dofs(system, r.tangential, Eigen::VectorXd::Zero(m));
+    mortar::CondensedContact condensed = mortar::condense_contact(mortar::stack_frictional_rows(pn, pt));
     double normal_force = setup.normal_force;
     for (int step = 0; step < scene.steps; ++step) {
-      const mortar::SceneData data = step == 0 ? *first : scene.step_data(r.bodies, step, normal_force);
-      // 6. Dirichlet elimination, both sets of rows on the free dofs, stacked, condensed: the
-      //    pivots (both dofs of each non-mortar node) become w_n and w_t.
-      mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, data.F, data.dirichlet);
-      const mortar::SaddlePointProblem pn = mortar::reduce_to_free_dofs(system, r.normal, G);
-      const mortar::SaddlePointProblem pt = mortar::reduce_to_free_dofs(system, r.tangential, Eigen::VectorXd::Zero(m));
-      const mortar::CondensedContact condensed = mortar::condense_contact(mortar::stack_frictional_rows(pn, pt));
+      if (step > 0) {
+        // the step's loads: f and the gaps G - B u_d of both row sets, then r = T^T (f - K g)
+        const mortar::SceneData data = scene.step_data(r.bodies, step, normal_force);
+        mortar::update_loads(system, K, data.F, data.dirichlet);
+        Eigen::VectorXd G_step(2 * m);
+        G_step << G - r.normal.B * system.prescribed, -(r.tangential.B * system.prescribed);
+        mortar::update_condensed_loads(condensed, system.K, system.rhs, G_step);
+      }
       // 7. The semismooth Newton method (friction_newton.hpp), or Coulomb by fixed point.
       StepResult s;
       if (setup.fixed_point && setup.law == mortar::FrictionLaw::coulomb) {

@@ -95,7 +95,6 @@ CondensedContact condense_contact(const SaddlePointProblem& p) {
   // Z: row i of T - I, u_{s_i} = (G_i + w_i - (B_r u)_i) / b_i.
   const RowMatrix B = p.B;
   c.b.resize(m);
-  c.g = Eigen::VectorXd::Zero(n);
   std::vector<Eigen::Triplet<double>> z;
   for (Eigen::Index i = 0; i < m; ++i) {
     c.b[i] = B.coeff(i, c.pivots[i]);
@@ -115,7 +114,6 @@ CondensedContact condense_contact(const SaddlePointProblem& p) {
       }
       z.emplace_back(i, it.col(), -it.value() / c.b[i]);
     }
-    c.g[c.pivots[i]] = p.G[i] / c.b[i];
   }
   c.Z.resize(m, n);
   c.Z.setFromTriplets(z.begin(), z.end());
@@ -137,12 +135,22 @@ CondensedContact condense_contact(const SaddlePointProblem& p) {
   const SparseMatrix E = SparseMatrix(KZ + SparseMatrix(KZ.transpose())) + ZtKZ;
   c.A = p.K + E;
 
-  // r = T^T (f - K g) = y + Z^T y_s
-  const Eigen::VectorXd y = p.f - p.K * c.g;
-  Eigen::VectorXd y_s(m);
-  for (Eigen::Index i = 0; i < m; ++i) y_s[i] = y[c.pivots[i]];
-  c.rhs = y + Zc.transpose() * y_s;
+  update_condensed_loads(c, p.K, p.f, p.G);
   return c;
+}
+
+void update_condensed_loads(CondensedContact& c, const SparseMatrix& K, const Eigen::VectorXd& f,
+                            const Eigen::VectorXd& G) {
+  const int m = c.rows();
+  if (G.size() != m || f.size() != K.rows())
+    throw std::invalid_argument("update_condensed_loads: sizes do not match the condensed problem");
+  c.g = Eigen::VectorXd::Zero(K.rows());
+  for (int i = 0; i < m; ++i) c.g[c.pivots[i]] = G[i] / c.b[i];
+  // r = T^T (f - K g) = y + Z^T y_s
+  const Eigen::VectorXd y = f - K * c.g;
+  Eigen::VectorXd y_s(m);
+  for (int i = 0; i < m; ++i) y_s[i] = y[c.pivots[i]];
+  c.rhs = y + c.Z.transpose() * y_s;
 }
 
 DualContactSolution solve_dual_contact(CondensedContact& c, const DualContactOptions& o) {

@@ -47,6 +47,10 @@ struct CondensedContact {
 // below 1e-10 |b_i| (round-off of the quadrature) are dropped and their largest size kept in
 // dropped_max; anything larger is refused (the basis is not dual).
 CondensedContact condense_contact(const SaddlePointProblem& p);
+// New loads on the same rows (a load path): g and r = T^T (f - K g) again from the free-dof K,
+// f and G; T, Z and A = T^T K T are kept, since neither depends on the loads.
+void update_condensed_loads(CondensedContact& c, const SparseMatrix& K, const Eigen::VectorXd& f,
+                            const Eigen::VectorXd& G);
 
 struct DualContactOptions {
   bool unilateral = true;      // false: bilateral, w = 0 everywhere

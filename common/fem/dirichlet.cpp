@@ -70,4 +70,19 @@ ReducedSystem eliminate_dirichlet(const SparseMatrix& K, const Eigen::VectorXd& 
   return r;
 }
 
+void update_loads(ReducedSystem& r, const SparseMatrix& K, const Eigen::VectorXd& F, const DirichletData& data) {
+  const int n = static_cast<int>(K.rows());
+  if (F.size() != n || static_cast<int>(r.full_to_free.size()) != n || data.dofs.size() != data.values.size())
+    throw std::invalid_argument("update_loads: sizes do not match the reduced system");
+  r.prescribed = Eigen::VectorXd::Zero(n);
+  for (std::size_t k = 0; k < data.dofs.size(); ++k) {
+    const int d = data.dofs[k];
+    if (d < 0 || d >= n || r.full_to_free[d] >= 0)
+      throw std::invalid_argument("update_loads: dof " + std::to_string(d) + " is not prescribed in this system");
+    r.prescribed[d] = data.values[k];
+  }
+  const Eigen::VectorXd Ku_d = K * r.prescribed;
+  for (std::size_t i = 0; i < r.free_dofs.size(); ++i) r.rhs[i] = F[r.free_dofs[i]] - Ku_d[r.free_dofs[i]];
+}
+
 }  // namespace mortar

@@ -34,5 +34,8 @@ struct ReducedSystem {
 // Builds K_ff column by column straight from K's compressed storage (no dense work).
 ReducedSystem eliminate_dirichlet(const SparseMatrix& K, const Eigen::VectorXd& F,
                                   const DirichletData& data);
+// New loads and prescribed values on the same prescribed dofs (a load path): rhs and
+// prescribed again, K_ff kept. Throws when data prescribes other dofs than r.
+void update_loads(ReducedSystem& r, const SparseMatrix& K, const Eigen::VectorXd& F, const DirichletData& data);
 
 }  // namespace mortar
