@@ -25,7 +25,7 @@ void expect_same(const BilateralSolution& steps, const BilateralSolution& librar
 }  // namespace
 
 TEST(ChapterLevels, the_steps_of_chapters_3_and_4_give_what_solve_bilateral_gives) {
-  const ManufacturedContact exact(Material(1, 0.3), Material(3, 0.25), sloped_profile(1));
+  const ManufacturedContact exact(Material(1, 0.3), Material(3, 0.25), sloped_profile(1), 1);
   for (int n2 : {8, 5}) {  // matching traces, then nonmatching ones
     const TwoBodyGeometry g{1, 0.5, 0.5, 8, 4, n2, 3, 0.2};  // L, H1, H2, n1, m1, n2, m2, jitter
     const TwoBodies bodies = make_two_bodies(g, exact.material(0), exact.material(1));

@@ -20,7 +20,8 @@ CondensedContact one_node(double r_n, double r_t) {
   CondensedContact c;
   c.pivots = {0, 1};
   c.b = Eigen::VectorXd::Ones(2);
-  c.Z.resize(2, 2);
+  c.Z.resize(2, 2);  // T = I: row s_i of T is e_i
+  c.Z.setIdentity();
   c.g = Eigen::VectorXd::Zero(2);
   std::vector<Eigen::Triplet<double>> t{{0, 0, 4.0}, {0, 1, 0.5}, {1, 0, 0.5}, {1, 1, 3.0}};
   c.A.resize(2, 2);

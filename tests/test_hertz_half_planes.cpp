@@ -193,7 +193,7 @@ TEST(ExactContactCheck, passes_the_signorini_and_bilateral_solutions_of_chapter_
   // and shows what separates them from Hertz: the signorini field is also the solution with no
   // gap at all (its jump is zero everywhere, the glued problem's solution), the Hertz field is not
   const Material m1(1, 0.3), m2(3, 0.25);
-  const ManufacturedContact signorini(m1, m2, signorini_profile(1.0, signorini_contact_point(1.0)));
+  const ManufacturedContact signorini(m1, m2, signorini_profile(1.0, signorini_contact_point(1.0)), 1.0);
   const ExactContactResiduals r = check_exact_contact(signorini, [](double x) { return signorini_gap(1.0, x); }, 1, 1, 1);
   print("signorini", r);
   EXPECT_LT(r.worst(), 1e-10);

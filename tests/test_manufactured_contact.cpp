@@ -84,7 +84,7 @@ const double signorini_xs[] = {0.0, 0.2, 0.5, 0.6, 0.64, 0.645, 0.7, 0.9, 1.0};
 
 TEST(ManufacturedContact, signorini_solution_satisfies_equilibrium_1_and_the_law_2) {
   for (const Pair& c : pairs) {
-    const ManufacturedContact m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), signorini_profile(1.0, signorini_contact_point(1.0)));
+    const ManufacturedContact m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), signorini_profile(1.0, signorini_contact_point(1.0)), 1.0);
     for (int l = 0; l < 2; ++l)
       for (double x : signorini_xs)
         for (double y : {0.05, 0.4}) {
@@ -112,7 +112,7 @@ TEST(ManufacturedContact, signorini_solution_satisfies_4_5_and_the_unilateral_co
   const double L = 1.0, x_star = signorini_contact_point(L);
   const Eigen::Vector2d n1(0, -1), n2(0, 1);
   for (const Pair& c : pairs) {
-    const ManufacturedContact m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), signorini_profile(L, x_star));
+    const ManufacturedContact m(Material(c.E1, c.nu1), Material(c.E2, c.nu2), signorini_profile(L, x_star), L);
     const double p_scale = m.pressure(0.0);
     ASSERT_GT(p_scale, 0.0);
     for (double x : signorini_xs) {
@@ -149,7 +149,7 @@ TEST(ManufacturedContact, signorini_contact_point_is_no_node_of_the_course_meshe
 }
 
 TEST(ManufacturedContact, flat_ends_profile_has_a_pressure_with_zero_slope_at_both_ends) {
-  const ManufacturedContact m(Material(1, 0.3), Material(3, 0.25), flat_ends_profile(1.0));
+  const ManufacturedContact m(Material(1, 0.3), Material(3, 0.25), flat_ends_profile(1.0), 1.0);
   const double d = 1e-6;
   for (double x : {0.0, 1.0}) {
     const double slope = (m.pressure(x + d) - m.pressure(x - d)) / (2 * d);  // the profile extends past Gamma_c

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "common/study/convergence_study.hpp"
+#include "common/linalg/memory_estimate.hpp"
 #include "common/linalg/spd_solver.hpp"
 #include "common/study/options.hpp"
 #include "common/study/timing_report.hpp"
@@ -48,6 +49,25 @@ struct Options {
 // The sweep puts up to 10 n1 elements on side 2 (ratio 1/10): keep it within a minute.
 constexpr long long max_side1_elements = 1 << 16;
 
+// What the run holds at its largest, counted before any work: the three transfers of
+// operator_facts as dense matrices (n1 = 4 n0), and the traces of the finest level, where the
+// sweep's ratio 1/10 gives side 2 ten times the elements (trace_bytes_per_node covers the
+// nodes, the merged grid and the mortar matrices of both sides).
+void check_memory(const mortar::OptionParser& parser, const Options& o) {
+  constexpr double trace_bytes_per_node = 1000;
+  const double facts_n1 = 4.0 * o.n0, facts_n2 = std::max(1.0, std::round(facts_n1 / o.h_ratio));
+  const double finest_n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  const double finest_nodes = finest_n1 + std::max(10 * finest_n1, finest_n1 / o.h_ratio) + 2;
+  char dense[128], traces[96];
+  std::snprintf(dense, sizeof dense, "the transfers as three dense %.0f x %.0f matrices (n1 = 4 n0)", facts_n1 + 1,
+                facts_n2 + 1);
+  std::snprintf(traces, sizeof traces, "the finest level's traces (%.3g nodes)", finest_nodes);
+  const std::string memory = mortar::memory_shortfall(
+      {{dense, 3 * mortar::dense_bytes(facts_n1 + 1, facts_n2 + 1)}, {traces, finest_nodes * trace_bytes_per_node}},
+      mortar::machine_memory(), "use a smaller --n0, a larger --h-ratio or fewer --levels");
+  if (!memory.empty()) parser.fail("n0", memory);
+}
+
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
   using mortar::Range;
   parser.add_int("n0", o.n0, "side-1 elements on the coarsest level", Range::closed(2, max_side1_elements));
@@ -69,6 +89,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   if (static_cast<long long>(o.n0) << (o.levels - 1) > max_side1_elements)
     parser.fail("levels", "the finest level would have more than " +
                               std::to_string(max_side1_elements) + " side-1 elements");
+  check_memory(parser, o);
   mortar::prepare_output_folder(parser, o.out);
 }
 

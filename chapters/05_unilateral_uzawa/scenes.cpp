@@ -16,7 +16,7 @@ std::unique_ptr<const mortar::ExactContact> make_exact(const SceneParameters& s,
     return std::make_unique<mortar::HertzHalfPlanes>(body1, body2, s.L / 2, hertz_exact_half_width(s.L), s.R);
   if (s.name == "signorini")
     return std::make_unique<mortar::ManufacturedContact>(
-        body1, body2, mortar::signorini_profile(s.L, mortar::signorini_contact_point(s.L)));
+        body1, body2, mortar::signorini_profile(s.L, mortar::signorini_contact_point(s.L)), s.L);
   return std::make_unique<mortar::ManufacturedContact>(body1, body2, s.L);
 }
 

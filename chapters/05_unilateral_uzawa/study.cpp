@@ -130,8 +130,19 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
                   dofs * reference_factor, max_dofs);
     parser.fail("levels", message);
   }
-  const std::string memory = mortar::memory_shortfall(dofs * reference_factor, bytes_per_counted_dof,
-                                                      mortar::machine_memory());
+  // The contact solvers work on S = B K^-1 B^T, dense on Gamma_c (its active block and its
+  // factor too): counted on the finest level, and on the partial scene's reference, whose
+  // Gamma_c has 4 times the nodes.
+  const double line_factor = o.scene == "partial" ? 4 : 1;
+  const double m = line_factor * (o.nonmortar == 1 ? n1 : n2) - 1, t = line_factor * (o.nonmortar == 1 ? n2 : n1) + 1;
+  char sparse[96], dense[160];
+  std::snprintf(sparse, sizeof sparse, "the sparse solves (%.3g dofs with the reference)", dofs * reference_factor);
+  std::snprintf(dense, sizeof dense, "S = B K^-1 B^T, its active block and the factor's dense block on Gamma_c "
+                "(%.0f multipliers, %.0f mortar nodes)", m, t);
+  const std::string memory = mortar::memory_shortfall(
+      {{sparse, dofs * reference_factor * bytes_per_counted_dof},
+       {dense, mortar::schur_dense_bytes(m, t) + mortar::dense_bytes(m, m)}},
+      mortar::machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
   mortar::note_nearly_incompressible(o);

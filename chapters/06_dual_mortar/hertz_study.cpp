@@ -14,6 +14,18 @@
 
 namespace chapter06 {
 
+std::vector<mortar::MemoryPart> hertz_memory_parts(const mortar::BilateralStudyOptions& o) {
+  const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  const double n2 = std::max(2.0, std::round(n1 / o.h_ratio));
+  const double dofs = 2 * (n1 + 1) * (n1 + 1) + 2 * (n2 + 1) * (n2 + 1);
+  const double m = (o.nonmortar == 1 ? n1 : n2) - 1, t = (o.nonmortar == 1 ? n2 : n1) + 1;
+  char sparse[96], dense[128];
+  std::snprintf(sparse, sizeof sparse, "the Hertz part's finest level (%.3g dofs, square blocks)", dofs);
+  std::snprintf(dense, sizeof dense, "the Hertz part's S = B K^-1 B^T on Gamma_c (%.0f multipliers, %.0f mortar nodes)",
+                m, t);
+  return {{sparse, dofs * mortar::bytes_per_dof_single_solve}, {dense, mortar::schur_dense_bytes(m, t)}};
+}
+
 std::string basis_name(Basis basis) { return basis == Basis::dual ? "dual" : "standard"; }
 
 HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, const HertzLevel* coarser) {

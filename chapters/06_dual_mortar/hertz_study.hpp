@@ -22,6 +22,11 @@ struct HertzOptions {
   bool nested_start = true;  // dual: each level's first active set from the level below
 };
 
+// The memory of part 2's finest level on the options of part 1: square blocks L tall, so
+// (n + 1)^2 nodes a body whatever --H1, --H2 and --aspect say; the standard basis builds S
+// and the factor's dense block on Gamma_c (memory_estimate.hpp).
+std::vector<mortar::MemoryPart> hertz_memory_parts(const mortar::BilateralStudyOptions& o);
+
 enum class Basis { standard, dual };
 std::string basis_name(Basis basis);
 

@@ -59,11 +59,16 @@ int main(int argc, char** argv) {
   std::string hertz_start = "nested";
   parser.add_choice("hertz-start", hertz_start, {"nested", "empty"},
                     "the dual Newton method's first active set: from the level below, or none");
-  mortar::parse_bilateral_options(parser, o, argc, argv);
+  mortar::parse_bilateral_options(parser, o, argc, argv, [&no_hertz](const mortar::BilateralStudyOptions& b) {
+    return no_hertz ? std::vector<mortar::MemoryPart>{} : chapter06::hertz_memory_parts(b);
+  });
   // Part 2 runs on chapter 5's bodies (square blocks of one material) unless materials are
-  // given, with the same sizes along Gamma_c as part 1.
+  // given, with the same sizes along Gamma_c as part 1. Its lengths follow --L: blocks L tall,
+  // R = L, delta = 0.02 L, so that its strains and pressures do not depend on the unit.
   hertz.bodies = o;
-  hertz.bodies.H1 = hertz.bodies.H2 = 1;
+  hertz.bodies.H1 = hertz.bodies.H2 = o.L;
+  hertz.R = o.L;
+  hertz.delta = 0.02 * o.L;
   if (!parser.given("E2")) hertz.bodies.E2 = 1;
   if (!parser.given("nu2")) hertz.bodies.nu2 = 0.3;
   hertz.nested_start = hertz_start == "nested";

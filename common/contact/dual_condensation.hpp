@@ -31,7 +31,7 @@ namespace mortar {
 struct CondensedContact {
   std::vector<int> pivots;  // s_i, a free dof per row
   Eigen::VectorXd b;        // B(i, s_i)
-  Eigen::SparseMatrix<double, Eigen::RowMajor> Z;  // m x n: row i is row s_i of T - I
+  Eigen::SparseMatrix<double, Eigen::RowMajor> Z;  // m x n: row i is row s_i of T (1/b_i at s_i)
   Eigen::VectorXd g;        // n: G_i / b_i at s_i, zero elsewhere
   SparseMatrix A;           // T^T K T, both triangles stored
   Eigen::VectorXd rhs;      // T^T (f - K g)

@@ -62,10 +62,11 @@ ContactProfile signorini_profile(double L, double x_star) {
 }
 
 ManufacturedContact::ManufacturedContact(const Material& body1, const Material& body2, double L)
-    : ManufacturedContact(body1, body2, sloped_profile(L)) {}
+    : ManufacturedContact(body1, body2, sloped_profile(L), L) {}
 
-ManufacturedContact::ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile)
-    : ExactContact(body1, body2), profile_(std::move(profile)) {
+ManufacturedContact::ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile,
+                                         double L)
+    : ExactContact(body1, body2), profile_(std::move(profile)), L_(L) {
   alpha_[0] = 1.0;
   alpha_[1] = -0.5;  // different tangential displacements: the interface slips
   beta_[0] = -1.0;
@@ -75,28 +76,29 @@ ManufacturedContact::ManufacturedContact(const Material& body1, const Material& 
 }
 
 Eigen::Vector2d ManufacturedContact::u(int l, const Eigen::Vector2d& p) const {
-  const double y = p.y();
+  const double y = p.y(), Y = y / L_;
   const ProfileValues f = profile_(p.x());
-  return A * Eigen::Vector2d(alpha_[l] * std::cos(y) * f.v - y * f.dc, beta_[l] * std::sin(y) * f.w + f.c);
+  return A * Eigen::Vector2d(alpha_[l] * std::cos(Y) * f.v - y * f.dc, beta_[l] * L_ * std::sin(Y) * f.w + f.c);
 }
 
 Eigen::Matrix2d ManufacturedContact::grad_u(int l, const Eigen::Vector2d& p) const {
-  const double y = p.y();
+  const double y = p.y(), Y = y / L_;
   const ProfileValues f = profile_(p.x());
   const double a = alpha_[l], b = beta_[l];
   Eigen::Matrix2d G;
-  G << a * std::cos(y) * f.w - y * f.ddc, -a * std::sin(y) * f.v - f.dc,
-       b * std::sin(y) * f.dw + f.dc, b * std::cos(y) * f.w;
+  G << a * std::cos(Y) * f.w - y * f.ddc, -a * std::sin(Y) * f.v / L_ - f.dc,
+       b * L_ * std::sin(Y) * f.dw + f.dc, b * std::cos(Y) * f.w;
   return A * G;
 }
 
 Eigen::Vector2d ManufacturedContact::body_force(int l, const Eigen::Vector2d& p) const {
-  const double y = p.y();
+  const double y = p.y(), Y = y / L_;
   const ProfileValues f = profile_(p.x());
-  const double a = alpha_[l], b = beta_[l], cy = std::cos(y), sy = std::sin(y);
+  const double a = alpha_[l], b = beta_[l], cy = std::cos(Y), sy = std::sin(Y);
   // second derivatives of u_x and u_y (v' = w)
-  const double ux_xx = a * cy * f.dw - y * f.dddc, ux_xy = -a * sy * f.w - f.ddc, ux_yy = -a * cy * f.v;
-  const double uy_xx = b * sy * f.ddw + f.ddc, uy_xy = b * cy * f.dw, uy_yy = -b * sy * f.w;
+  const double ux_xx = a * cy * f.dw - y * f.dddc, ux_xy = -a * sy * f.w / L_ - f.ddc,
+               ux_yy = -a * cy * f.v / (L_ * L_);
+  const double uy_xx = b * L_ * sy * f.ddw + f.ddc, uy_xy = b * cy * f.dw, uy_yy = -b * sy * f.w / L_;
   const Material& m = material(l);
   const Eigen::Vector2d laplacian(ux_xx + ux_yy, uy_xx + uy_yy);
   const Eigen::Vector2d grad_div(ux_xx + uy_xy, ux_xy + uy_yy);

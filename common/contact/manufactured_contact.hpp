@@ -1,7 +1,11 @@
 // Exact solutions of frictionless contact between two different materials (chapter 3 notes),
 // for convergence studies. On body l (l = 1 upper, 2 lower), for an x-profile (v, w = v', c):
 //
-//   u^l = ( alpha_l cos(y) v(x) - y c'(x),  beta_l sin(y) w(x) + c(x) ),    times A.
+//   u^l = ( alpha_l cos(y/L) v(x) - y c'(x),  beta_l L sin(y/L) w(x) + c(x) ),    times A,
+//
+// where L is the length of Gamma_c. Every profile is a function of x/L with v and c of the
+// size of L, so u(x, y) = L u_1(x/L, y/L): strains, stresses and pressures do not depend on the
+// unit of length and neither does any relative error.
 //
 // On y = 0: u^1_y = u^2_y = c(x)                                   (3) normal continuity
 //           sigma_12 = mu_l (alpha_l (-sin 0) v - c' + beta_l sin 0 w' + c') = 0   (5)
@@ -44,7 +48,8 @@ double signorini_gap(double L, double x);
 class ManufacturedContact : public ExactContact {
  public:
   ManufacturedContact(const Material& body1, const Material& body2, double L);  // sloped
-  ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile);
+  // profile: one of the profiles above, made for the same L
+  ManufacturedContact(const Material& body1, const Material& body2, ContactProfile profile, double L);
 
   // l = 0 (body 1, y > 0) or 1 (body 2, y < 0)
   Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const override;
@@ -55,6 +60,7 @@ class ManufacturedContact : public ExactContact {
 
  private:
   ContactProfile profile_;
+  double L_;  // the length of Gamma_c, the scale of y in cos(y/L), sin(y/L)
   double alpha_[2], beta_[2];
 };
 

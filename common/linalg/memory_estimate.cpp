@@ -73,6 +73,33 @@ std::string memory_shortfall(double dofs, double bytes_per_dof, const MachineMem
          ": use fewer --levels or a smaller --n0";
 }
 
+double dense_bytes(double rows, double cols) { return 8 * rows * cols; }
+
+double schur_dense_bytes(double m, double t) {
+  const double nc = m + t;
+  return 2 * dense_bytes(nc, nc) + dense_bytes(nc, m) + dense_bytes(m, m);
+}
+
+double elimination_dense_bytes(double m, double t) {
+  // dense B_r and X (8 bytes an entry), X as triplets (16) and sparse (12): 44 bytes per entry
+  // of m x t; the t x t block: dense, triplets twice, sparse, and its factor (64 bytes)
+  return 5.5 * dense_bytes(m, t) + 8 * dense_bytes(t, t);
+}
+
+std::string memory_shortfall(const std::vector<MemoryPart>& parts, const MachineMemory& machine,
+                             const std::string& advice) {
+  double needed = run_bytes(0, 0);
+  const MemoryPart* largest = nullptr;
+  for (const MemoryPart& p : parts) {
+    needed += p.bytes;
+    if (largest == nullptr || p.bytes > largest->bytes) largest = &p;
+  }
+  if (needed <= machine.usable()) return "";
+  std::string text = "the run would need about " + gb(needed) + " of memory";
+  if (largest != nullptr) text += ", " + gb(largest->bytes) + " of it for " + largest->name;
+  return text + "; this machine has " + machine.describe() + ": " + advice;
+}
+
 void reset_peak_memory() {
   std::ofstream clear("/proc/self/clear_refs");
   if (clear) clear << "5";  // 5: reset the peak resident set size

@@ -49,12 +49,32 @@ void add_two_body_options(OptionParser& parser, TwoBodyOptions& o) {
   parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::positive());
   parser.add_double("nu2", o.nu2, "Poisson ratio of body 2", Range::open(-1, 0.5));
   parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
-  parser.add_double("H1", o.H1, "height of body 1 [m]", Range::closed(1e-6, 1e6));
-  parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H1", o.H1, "height of body 1 [m] (the cells along it must stay within 20:1, see --aspect)", Range::closed(1e-9, 1e9));
+  parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-9, 1e9));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
 }
 
-void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv) {
+std::vector<MemoryPart> bilateral_memory_parts(const BilateralStudyOptions& o) {
+  const FinestSize size = finest_size(o);
+  // multipliers: the non-mortar side's interior nodes; t: the mortar side's nodes
+  const double n_nonmortar = o.nonmortar == 1 ? size.n1 : size.n2, n_mortar = o.nonmortar == 1 ? size.n2 : size.n1;
+  const double m = size.q * n_nonmortar - 1, t = size.q * n_mortar + 1;
+  char sparse[96], dense[160];
+  std::snprintf(sparse, sizeof sparse, "the finest level's sparse solve (%.3g dofs)", size.dofs());
+  std::vector<MemoryPart> parts = {{sparse, size.dofs() * bytes_per_dof_single_solve}};
+  if (o.saddle_solver == "schur") {
+    std::snprintf(dense, sizeof dense, "S = B K^-1 B^T and the factor's dense block on Gamma_c (%.0f multipliers, "
+                  "%.0f mortar nodes)", m, t);
+    parts.push_back({dense, schur_dense_bytes(m, t)});
+  } else if (o.saddle_solver == "elimination") {
+    std::snprintf(dense, sizeof dense, "X = -B_s^-1 B_r and the block it adds to K on Gamma_c (%.0f x %.0f, dense)", m, t);
+    parts.push_back({dense, elimination_dense_bytes(m, t)});
+  }
+  return parts;
+}
+
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv,
+                             const MoreMemoryParts& more_parts) {
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
   add_two_body_options(parser, o);
@@ -82,7 +102,12 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
                   size.dofs(), size.largest(), max_dofs, max_cells_per_side);
     parser.fail("levels", message);
   }
-  const std::string memory = memory_shortfall(size.dofs(), bytes_per_dof_single_solve, machine_memory());
+  std::vector<MemoryPart> parts = bilateral_memory_parts(o);
+  if (more_parts) {
+    const std::vector<MemoryPart> more = more_parts(o);
+    parts.insert(parts.end(), more.begin(), more.end());
+  }
+  const std::string memory = memory_shortfall(parts, machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
   prepare_output_folder(parser, o.out);
   note_nearly_incompressible(o);
@@ -90,7 +115,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
 
 ManufacturedContact manufactured_solution(const BilateralStudyOptions& o) {
   const Material m1(o.E1, o.nu1), m2(o.E2, o.nu2);
-  return ManufacturedContact(m1, m2, o.pressure_ends == "flat" ? flat_ends_profile(o.L) : sloped_profile(o.L));
+  return ManufacturedContact(m1, m2, o.pressure_ends == "flat" ? flat_ends_profile(o.L) : sloped_profile(o.L), o.L);
 }
 
 void check_two_body_meshes(const OptionParser& parser, const TwoBodyOptions& o, int n0, int levels, double aspect) {

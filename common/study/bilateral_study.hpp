@@ -6,7 +6,9 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "common/linalg/memory_estimate.hpp"
 #include "common/linalg/physical_limit.hpp"
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/contact_fields.hpp"
@@ -43,8 +45,16 @@ struct BilateralStudyOptions : TwoBodyOptions {
   bool profile = false;  // print where the finest level's time goes
 };
 
-// Declares every option of chapters 3 and 4, parses, checks the combinations, makes --out.
-void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv);
+// The memory of the finest level: its sparse solve and the dense blocks the saddle-point
+// solver builds on Gamma_c (memory_estimate.hpp).
+std::vector<MemoryPart> bilateral_memory_parts(const BilateralStudyOptions& o);
+// What a chapter runs besides the bilateral study (chapter 6: its Hertz part), from the options.
+using MoreMemoryParts = std::function<std::vector<MemoryPart>(const BilateralStudyOptions&)>;
+
+// Declares every option of chapters 3 and 4, parses, checks the combinations and the memory
+// of every part (`more_parts` too), makes --out.
+void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv,
+                             const MoreMemoryParts& more_parts = {});
 
 // The manufactured solution --pressure-ends asks for: sloped_profile (sigma_N' != 0 at x = L,
 // which caps the L2 best approximation in M_h^1 at h^{3/2}) or flat_ends_profile
