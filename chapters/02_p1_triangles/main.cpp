@@ -47,7 +47,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   using mortar::Range;
   parser.add_int("n0", o.n0, "cells along each side on the coarsest level", Range::closed(1, max_cells_per_side));
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 12));
-  parser.add_double("E", o.E, "Young's modulus E [Pa]", Range::positive());
+  // beyond 1e300 the Lame constants E nu / ((1 + nu)(1 - 2 nu)) overflow for nu near 1/2
+  parser.add_double("E", o.E, "Young's modulus E [Pa]", Range::closed(1e-300, 1e300));
   parser.add_double("nu", o.nu, "Poisson ratio nu (plane strain needs nu < 0.5)", Range::open(-1, 0.5));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
   parser.add_choice("spd-solver", o.spd_solver, {"cholmod", "simplicial_ldlt"}, "sparse Cholesky");

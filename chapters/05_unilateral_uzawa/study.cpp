@@ -71,7 +71,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
                     "settles, or 1 / ||S|| throughout");
   parser.add_double("rho", o.rho, "Uzawa step rho; 0 = automatic: 1 / ||B K^-1 B^T|| (power iteration), "
                     "for plain Uzawa then 2 / (lambda_max + lambda_min) of the active block", Range::closed(0, 1e300));
-  parser.add_double("tol", o.tol, "tolerance on the complementarity residual", Range{0, 1e-2, true, false});
+  // below 1e-14 the residual's own round-off (1e-16 to 1e-15, measured) decides whether it stops
+  parser.add_double("tol", o.tol, "tolerance on the complementarity residual (relative; round-off sets the floor)",
+                    Range::half_open(1e-14, 1e-2));
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level (signorini: 8, hertz-exact: 4 unless given)",
                  Range::closed(2, 1 << 14));
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3; signorini: 6, hertz-exact: 7 unless given)",
@@ -110,6 +112,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
     if (E < 1e-100 || E > 1e100)
       parser.fail(name, "the contact solvers work on B K^-1 B^T, which scales like 1/E: E must lie in "
                         "[1e-100, 1e100] Pa (the displacements do not depend on the unit of E; change it)");
+  mortar::check_stiffness_ratio(parser, o);
+  mortar::choose_softer_nonmortar(parser, o);
   // Sizes in floating point, so that no product can overflow before it is compared; the
   // meshes are those of two_body_geometry with square cells.
   const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);

@@ -60,15 +60,11 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_int("threads", o.threads, mortar::solver_threads_help, Range::closed(1, 64));
   parser.parse(argc, argv);
   mortar::set_solver_threads(o.threads);
-  // The non-mortar side carries the multipliers: on the stiffer body the nodal conditions see
-  // the soft body's motion only through its coarse image, and the Newton method cycles (E1 = 1e6
-  // E2 with body 1 non-mortar: 50 steps without settling, at 474 dofs). Unless the user chose,
-  // the softer body is the non-mortar side.
-  if (!parser.given("nonmortar") && o.E1 > 10 * o.E2) {
-    o.nonmortar = 2;
-    std::printf("note: body 1 is %.3g times stiffer than body 2: body 2 is the non-mortar side (--nonmortar 1 to "
-                "force body 1)\n", o.E1 / o.E2);
-  }
+  // The softer body is the non-mortar side unless the user chose (bilateral_study.hpp): on the
+  // stiffer one the Newton method cycles (E1 = 1e6 E2 with body 1 non-mortar: 50 steps without
+  // settling, at 474 dofs).
+  mortar::check_stiffness_ratio(parser, o);
+  mortar::choose_softer_nonmortar(parser, o);
   // tau = F p on the slip zone: the manufactured shear grows with F, and beyond F = 10 it is
   // more than ten times the pressure, which nonmatching meshes then read to no digit (measured
   // at F = 1e6: a pressure error of 8e4 times the pressure); cattaneo's shear is a given Q

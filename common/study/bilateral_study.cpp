@@ -44,12 +44,12 @@ void add_two_body_options(OptionParser& parser, TwoBodyOptions& o) {
   parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)",
                     Range::closed(0.01, 100));
   parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, which carries the multipliers (1 or 2)", Range::closed(1, 2));
-  parser.add_double("E1", o.E1, "Young's modulus of body 1 [Pa]", Range::positive());
+  parser.add_double("E1", o.E1, "Young's modulus of body 1 [Pa]", Range::closed(1e-300, 1e300));
   parser.add_double("nu1", o.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
-  parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::positive());
+  parser.add_double("E2", o.E2, "Young's modulus of body 2 [Pa]", Range::closed(1e-300, 1e300));
   parser.add_double("nu2", o.nu2, "Poisson ratio of body 2", Range::open(-1, 0.5));
   parser.add_double("L", o.L, "length of Gamma_c [m]", Range::closed(1e-6, 1e6));
-  parser.add_double("H1", o.H1, "height of body 1 [m] (the cells along it must stay within 20:1, see --aspect)", Range::closed(1e-9, 1e9));
+  parser.add_double("H1", o.H1, "height of body 1 [m] (its cells must stay within 20:1)", Range::closed(1e-9, 1e9));
   parser.add_double("H2", o.H2, "height of body 2 [m]", Range::closed(1e-9, 1e9));
   parser.add_double("jitter", o.jitter, "random node displacement, fraction of h", Range::closed(0, 0.4));
 }
@@ -73,6 +73,37 @@ std::vector<MemoryPart> bilateral_memory_parts(const BilateralStudyOptions& o) {
   return parts;
 }
 
+void choose_softer_nonmortar(const OptionParser& parser, TwoBodyOptions& o) {
+  constexpr double ratio = 10;
+  if (!parser.given("nonmortar")) {
+    if (o.E1 > ratio * o.E2) {
+      o.nonmortar = 2;
+      std::printf("note: body 1 is %.3g times stiffer than body 2: body 2, the softer, is the non-mortar side "
+                  "(--nonmortar 1 to force body 1)\n", o.E1 / o.E2);
+    }
+    return;
+  }
+  const double stiffer = o.nonmortar == 1 ? o.E1 / o.E2 : o.E2 / o.E1;
+  if (stiffer > ratio)
+    std::printf("warning: the non-mortar body %d is %.3g times stiffer than the other: expect the contact pressure "
+                "to oscillate from node to node (README.md, \"Hard cases\"); the softer body is the better "
+                "non-mortar side\n", o.nonmortar, stiffer);
+}
+
+void check_stiffness_ratio(const OptionParser& parser, const TwoBodyOptions& o) {
+  constexpr double limit = 1e10;
+  const double ratio = o.E1 / o.E2;
+  if (ratio <= limit && ratio >= 1 / limit) return;
+  char message[320];
+  std::snprintf(message, sizeof message,
+                "body %d is %.3g times stiffer than body %d: beyond 1e10 the soft body's equations drown in the "
+                "stiff body's round-off and the solvers call the matrix singular; bring E1 / E2 within [1e-10, 1e10] "
+                "(a body that much stiffer is rigid for the other)",
+                ratio > 1 ? 1 : 2, ratio > 1 ? ratio : 1 / ratio, ratio > 1 ? 2 : 1);
+  const bool one_given = parser.given("E1") != parser.given("E2");  // name the one the user gave
+  parser.fail(one_given ? (parser.given("E1") ? "E1" : "E2") : (ratio > 1 ? "E1" : "E2"), message);
+}
+
 void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv,
                              const MoreMemoryParts& more_parts) {
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
@@ -93,6 +124,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   mortar::set_solver_threads(o.threads);
   parser.apply_quick(o.quick, {{"n0", o.n0, 6}, {"levels", o.levels, 3}});
   check_two_body_meshes(parser, o, o.n0, o.levels, o.aspect);
+  check_stiffness_ratio(parser, o);
   const FinestSize size = finest_size(o);
   if (size.largest() > max_cells_per_side || size.dofs() > max_dofs) {
     char message[256];

@@ -31,6 +31,19 @@ struct TwoBodyOptions {
   int degree = 1;  // q of both bodies: set by the chapter (7: P2), not an option
 };
 void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
+// Unilateral and frictional contact (chapters 5 and 8): the non-mortar side carries the
+// multipliers, and on a body more than 10 times stiffer than the other its nodal conditions see
+// the soft body's motion only through their coarse image: the pressure oscillates from node to
+// node (chapter 5, Hertz, E1 = 1e8 E2: L2 pressure errors 86%, 76%, 92% on levels 3-5, against
+// 12%, 4.4%, 2.8% the other way round) and chapter 8's Newton method cycles. Unless
+// --nonmortar is given, the softer body becomes the non-mortar side, with a note; a stiffer
+// non-mortar side chosen by the user gets a warning.
+void choose_softer_nonmortar(const OptionParser& parser, TwoBodyOptions& o);
+// Refuses E1 / E2 beyond 1e10 either way, before any work: the soft body's equations then sit
+// more than 10 of the 16 digits below the stiff body's, and the solvers stop telling them from
+// round-off (ch04 --quick: the LU calls [K B^T; B 0] singular from 1e11, CHOLMOD calls K
+// singular at 1e14). Up to 1e10 every solver gives the same rates to 8 digits.
+void check_stiffness_ratio(const OptionParser& parser, const TwoBodyOptions& o);
 
 struct BilateralStudyOptions : TwoBodyOptions {
   int n0 = 12;           // body-1 elements along Gamma_c on the coarsest level
