@@ -3,7 +3,9 @@
 // and invalid values: fractions, NaN, inf, huge and tiny numbers, missing values, unknown and
 // duplicated options. Every run must end with status 0 or 2 (or 1 with a "<program>: error:"
 // message), by no signal and with no sanitizer report; a refusal (2) leaves nothing behind,
-// and an accepted run (0) writes no NaN or inf into any CSV or JSON. Sizes stay small (a
+// and an accepted run (0) writes no NaN or inf into any CSV or JSON. Some lists point --out at
+// a user's own folder, a dangling symlink or a symlink loop: whatever the status, the user's
+// files and links are still there afterwards. Sizes stay small (a
 // coarsest mesh of 4 and 3 levels unless the list itself tries --n0 or --levels), so each
 // accepted run takes well under a second.
 #include <gtest/gtest.h>
@@ -93,7 +95,8 @@ class ListMaker {
   ListMaker(std::vector<OptionSpec> options, unsigned s) : options_(std::move(options)), rng_(s) {}
 
   // The folder comes first so that a later --out in the list (valid or not) is the one tried.
-  std::vector<std::string> next(const std::string& out, const std::string& elsewhere) {
+  std::vector<std::string> next(const std::string& out, const std::string& elsewhere,
+                                const std::vector<std::string>& users) {
     std::vector<std::string> args = {"--no-plot", "--out", out, "--n0", "4", "--levels", "3"};
     const int changes = 1 + pick(4);
     for (int k = 0; k < changes; ++k) {
@@ -113,7 +116,7 @@ class ListMaker {
           continue;
         }
         if (kind == 3 && k + 1 == changes) continue;  // the value is missing at the end
-        args.push_back(value_for(o, out, elsewhere));
+        args.push_back(value_for(o, out, elsewhere, users));
       }
     }
     return args;
@@ -122,10 +125,14 @@ class ListMaker {
  private:
   std::size_t pick(std::size_t n) { return static_cast<std::size_t>(rng_() % n); }
 
-  std::string value_for(const OptionSpec& o, const std::string& out, const std::string& elsewhere) {
+  std::string value_for(const OptionSpec& o, const std::string& out, const std::string& elsewhere,
+                        const std::vector<std::string>& users) {
     const bool odd = pick(3) == 0;
-    if (o.name == "out")
-      return std::vector<std::string>{out, elsewhere, "/proc/forbidden/x", ""}[pick(4)];
+    if (o.name == "out") {
+      std::vector<std::string> folders = {out, elsewhere, "/proc/forbidden/x", ""};
+      folders.insert(folders.end(), users.begin(), users.end());
+      return folders[pick(folders.size())];
+    }
     if (o.name == "n0") return n0_values[pick(n0_values.size())];
     if (o.name == "levels") return levels_values[pick(levels_values.size())];
     if (odd) return odd_values[pick(odd_values.size())];
@@ -162,18 +169,58 @@ std::vector<std::string> files_with_nan_or_inf(const fs::path& folder) {
   return found;
 }
 
+// What a user may have where a run writes: a folder holding their own files (one named like
+// the programs' write probe), a dangling symlink and a symlink loop. Returned: the --out values
+// that point there.
+struct UserFiles {
+  fs::path root;
+  std::vector<std::string> outs() const {
+    return {(root / "mine").string(), (root / "dangling").string(), (root / "loop" / "sub").string()};
+  }
+  void make() const {
+    fs::remove_all(root);
+    fs::create_directories(root / "mine");
+    std::ofstream(root / "mine" / "notes.txt") << "mine\n";
+    std::ofstream(root / "mine" / ".write_probe") << "mine too\n";
+    fs::create_symlink(root / "nowhere", root / "dangling");
+    fs::create_symlink(root / "loop", root / "loop");
+  }
+  // "" when everything the user had is still there, unchanged; else what is missing.
+  std::string missing() const {
+    std::string m;
+    for (const char* f : {"notes.txt", ".write_probe"}) {
+      std::ifstream in(root / "mine" / f);
+      std::string line;
+      if (!std::getline(in, line) || line.rfind("mine", 0) != 0) m += std::string(" mine/") + f;
+    }
+    for (const char* link : {"dangling", "loop"})
+      if (!fs::is_symlink(fs::symlink_status(root / link))) m += std::string(" the symlink ") + link;
+    return m;
+  }
+  // the entries a refused run may find: the user's own, nothing more
+  bool untouched_but_for_outputs(bool refused) const {
+    if (!refused) return true;
+    std::size_t entries = 0;
+    for (auto it = fs::recursive_directory_iterator(root / "mine"); it != fs::recursive_directory_iterator(); ++it)
+      ++entries;
+    return entries == 2 && !fs::exists(root / "nowhere");
+  }
+};
+
 void fuzz(const std::string& program) {
   const std::string name = fs::path(program).filename().string();
   const std::vector<OptionSpec> options = options_from_help(program);
   ASSERT_GE(options.size(), 8u) << "could not read the options of " << name << " from --help";
   const fs::path root = fs::path(WORK_DIR) / name;
   const std::string out = (root / "run").string(), elsewhere = (root / "run" / "nested" / "deeper").string();
+  const UserFiles user{fs::path(WORK_DIR) / (name + ".user")};
   ListMaker lists(options, seed);
   std::map<int, int> count;  // exit status -> runs
   std::map<std::string, int> errors;  // the message of each status-1 run
   for (int i = 0; i < lists_per_program; ++i) {
     fs::remove_all(root);
-    const std::vector<std::string> args = lists.next(out, elsewhere);
+    user.make();
+    const std::vector<std::string> args = lists.next(out, elsewhere, user.outs());
     const ProgramRun r = run(program, args);
     ++count[r.status];
     const std::string what = name + joined(args) + "\n" + r.output;
@@ -187,11 +234,15 @@ void fuzz(const std::string& program) {
       EXPECT_TRUE(r.status == 0 || r.status == 2) << "status " << r.status << ": " << what;
     if (r.status == 2) {
       EXPECT_FALSE(fs::exists(root)) << "a refused run left output behind: " << what;
+      EXPECT_TRUE(user.untouched_but_for_outputs(true)) << "a refused run wrote beside the user's files: " << what;
     }
+    const std::string lost = user.missing();
+    EXPECT_TRUE(lost.empty()) << "the run removed or changed the user's" << lost << ": " << what;
     if (r.status == 0 && fs::exists(root))
       for (const std::string& f : files_with_nan_or_inf(root)) ADD_FAILURE() << "NaN or inf in " << f << "\n" << what;
   }
   fs::remove_all(root);
+  fs::remove_all(user.root);
   std::ostringstream tally;
   tally << name << ": " << lists_per_program << " argument lists (seed " << seed << "): " << count[0]
         << " accepted, " << count[2] << " refused with status 2, " << count[1] << " status 1";

@@ -171,6 +171,61 @@ TEST(ContactSolvers, uzawa_with_rho_too_large_fails_loudly) {
   }
 }
 
+// The Uzawa step lambda <- (lambda + rho (b - S lambda))_+ on problems small enough to follow
+// by hand: K = I, B = I, f = (1, -1), G = 0, so S = I and b = (1, -1). With rho = 1 one step
+// lands on the answer lambda = (1, 0) (the projection removes the second row's pull); with
+// rho = 1/2 the first row halves its distance to 1 at each step, 1 - 2^-k, and never lands.
+TEST(ContactSolvers, one_plain_uzawa_step_is_the_projected_gradient_step) {
+  ContactProblem p;
+  p.K.resize(2, 2);
+  p.K.setIdentity();
+  p.B = p.K;
+  p.f = Eigen::Vector2d(1, -1);
+  p.G = Eigen::Vector2d::Zero();
+  ContactSolverOptions o = with(ContactSolverKind::uzawa, false);
+  o.rho = 1;
+  const ContactSolution one = solve_contact(p, o);
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_EQ(one.lambda[0], 1.0);
+  EXPECT_EQ(one.lambda[1], 0.0);
+  EXPECT_EQ(one.u[0], 0.0);   // K u = f - B^T lambda
+  EXPECT_EQ(one.u[1], -1.0);  // row 1 is open: u_1 = -1 < G_1 = 0
+  o.rho = 0.5;
+  o.max_iterations = 3;
+  try {
+    solve_contact(p, o);
+    ADD_FAILURE() << "rho = 1/2 reached the tolerance in 3 steps";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("did not reach"), std::string::npos) << e.what();
+  }
+  o.max_iterations = 100;
+  const ContactSolution half = solve_contact(p, o);
+  EXPECT_GT(half.iterations, 20);  // 1 - 2^-k: about 27 halvings to 1e-8
+  EXPECT_LT(half.iterations, 35);
+  EXPECT_NEAR(half.lambda[0], 1.0, 1e-7);
+}
+
+// The refusal bound is 2 / ||S|| itself: just below it Uzawa is accepted and converges (slowly,
+// the error multiplied by |1 - rho mu| ~ 0.9 on the largest eigenvalue); at it the run is
+// refused before any step, by the up-front test and not by the blow-up test in the loop.
+TEST(ContactSolvers, uzawa_is_refused_from_rho_equal_to_two_over_the_norm_of_S) {
+  const Built b = pressed(12, 1.5, 0.02, Matching::integral);
+  const double S_norm = solve_contact(b.problem, with(ContactSolverKind::pdas)).S_norm;
+  ContactSolverOptions o = with(ContactSolverKind::uzawa, false);
+  o.rho = 1.9 / S_norm;
+  const ContactSolution below = solve_contact(b.problem, o);
+  EXPECT_LE(below.residual, o.tol);
+  EXPECT_EQ(below.rho, o.rho);
+  o.rho = 2.0 / S_norm;
+  try {
+    solve_contact(b.problem, o);
+    ADD_FAILURE() << "rho = 2 / ||S|| was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("rho must stay below 2 / ||B K^{-1} B^T||"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("iterations"), std::string::npos) << "refused inside the loop: " << e.what();
+  }
+}
+
 TEST(ContactSolvers, unilateral_equals_bilateral_when_contact_is_everywhere) {
   TwoBodyGeometry g;
   g.n1 = 12; g.m1 = 6; g.n2 = 8; g.m2 = 4;

@@ -100,6 +100,30 @@ TEST(DualCondensation, the_right_first_active_set_takes_one_step) {
   EXPECT_LT(relative(again.lambda, first.lambda), 1e-12);
 }
 
+// The Newton method's active-set rule is strict, lambda_i + c_i w_i > 0: a row with zero
+// multiplier and exactly zero weighted gap stays inactive and the method ends after one step.
+// Two rows, T = I (Z the identity, b = 1), A = diag(4, 3), r = (0, -3): the free solve gives
+// w = (0, -1), row 0 exactly closed, row 1 open. A ">= 0" would make row 0 active, a second step.
+TEST(DualCondensation, newton_leaves_a_row_with_zero_gap_and_zero_force_inactive_in_one_step) {
+  CondensedContact c;
+  c.pivots = {0, 1};
+  c.b = Eigen::VectorXd::Ones(2);
+  c.Z.resize(2, 2);
+  c.Z.setIdentity();
+  c.g = Eigen::VectorXd::Zero(2);
+  c.A.resize(2, 2);
+  c.A.insert(0, 0) = 4;
+  c.A.insert(1, 1) = 3;
+  c.rhs = Eigen::Vector2d(0, -3);
+  const DualContactSolution s = solve_dual_contact(c, {});
+  EXPECT_EQ(s.iterations, 1);
+  EXPECT_EQ(s.active_set_changes, 0);
+  EXPECT_EQ(s.w[0], 0.0);
+  EXPECT_DOUBLE_EQ(s.w[1], -1.0);
+  EXPECT_EQ(s.lambda.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_DOUBLE_EQ(s.u[1], -1.0);  // u = T v + g
+}
+
 // With no load the bodies touch where the gap g = (x - 1/2)^2 / 2 vanishes. The standard
 // psi_i >= 0 give G_i = int g psi_i >= 0, so nothing is pressed. The dual psi_i change sign:
 // at a node where g is smaller than about g'' h^2 / 6, G_i = int g psi_i < 0, the unloaded

@@ -48,12 +48,20 @@ void add_hertz_results(mortar::JsonObject& results, const Options& o, const mort
 void print_hertz_errors(const Options& o, const mortar::ConvergenceTable& table,
                         const UnilateralLevel& f, const HertzReference& ref) {
   if (!ref.fine) {
-    // "do not touch" only where the pointwise gap says so too (a zone narrower than an
-    // element shows no multiplier, yet the bodies interpenetrate: see the warning above)
-    std::printf("note: %s (total force 0): the Hertz errors are 0 by convention and their rates "
-                "are undefined (null)\n",
-                f.max_penetration > 0 ? "no multiplier is active, on the levels or on the reference's meshes"
-                                      : "the bodies do not touch");
+    // No reference: its graded meshes saw no contact. Say what the levels saw: "do not touch"
+    // only where neither a multiplier nor the pointwise gap says otherwise (a zone narrower
+    // than an element can show one active node, or none and a penetration: the warning above).
+    if (!f.zone.empty)
+      std::printf("note: the finest level has %d node%s in contact (total force %.3g N/m), but the reference "
+                  "(integral matching on graded meshes) found none: the zone is narrower than an element, where "
+                  "values at nodes and averages over elements disagree; the Hertz errors are 0 by convention and "
+                  "their rates are undefined (null)\n",
+                  f.zone.active_nodes, f.zone.active_nodes == 1 ? "" : "s", f.total_force);
+    else
+      std::printf("note: %s (total force 0): the Hertz errors are 0 by convention and their rates are undefined "
+                  "(null)\n",
+                  f.penetrates() ? "no multiplier is active, on the levels or on the reference's meshes"
+                                 : "the bodies do not touch");
     return;
   }
   std::printf("finite-body reference: %d dofs graded to %.2g m at the contact edges, total force "

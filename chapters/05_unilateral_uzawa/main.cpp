@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     std::printf("finest level: %d dofs, %d nodes in contact, total force %.6g N/m, %d iterations, "
                 "residual %.2e\n", f.bodies.num_dofs(), f.zone.active_nodes, f.total_force,
                 f.solution.iterations, f.solution.residual);
-    if (f.max_penetration > 0 && f.zone.active_elements == 0)
+    if (f.penetrates() && f.zone.active_elements == 0)
       std::printf("warning: the bodies interpenetrate by up to %.3g m at x = %.4g m, yet %s: the zone "
                   "where they should touch is narrower than an element (h1 = %.3g m), and the constraints "
                   "(averages against psi_i, or values at the nodes of xi^1) do not see it; refine "

@@ -1,5 +1,8 @@
 #include "unilateral_level.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <limits>
 #include <optional>
 
@@ -15,11 +18,13 @@ namespace {
 void measure_penetration(UnilateralLevel& r) {
   const mortar::InterfaceCurve& j = r.jump;
   r.max_penetration = -std::numeric_limits<double>::infinity();
+  r.penetration_round_off = 0;
   for (std::size_t k = 0; k < j.x.size(); ++k)
     for (double t : {0.0, 0.5}) {
       if (t > 0 && k + 1 == j.x.size()) break;
       const double x = t > 0 ? 0.5 * (j.x[k] + j.x[k + 1]) : j.x[k];
       const double value = t > 0 ? 0.5 * (j.value[k] + j.value[k + 1]) : j.value[k];
+      r.penetration_round_off = std::max({r.penetration_round_off, 1e-9 * std::fabs(value), 1e-9 * std::fabs(r.gap(x))});
       if (value - r.gap(x) > r.max_penetration) {
         r.max_penetration = value - r.gap(x);
         r.max_penetration_x = x;

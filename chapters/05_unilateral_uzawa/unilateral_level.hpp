@@ -41,6 +41,10 @@ struct UnilateralLevel {
   // integral constraints of K_h^I only bound averages of it, so it can stay positive, by
   // O(h^2) where the gap is smooth, by much more where the zone is narrower than an element.
   double max_penetration = 0, max_penetration_x = 0;
+  // Round-off of [u_h.n] - g: 1e-9 of the largest |[u_h.n]| or |g| on Gamma_c. A penetration
+  // below it (1.4e-17 m at a pointwise contact node, where [u_h.n] = g is imposed) is none.
+  double penetration_round_off = 0;
+  bool penetrates() const { return max_penetration > penetration_round_off; }
 };
 
 UnilateralLevel solve_unilateral_level(const UnilateralSetup& setup,
