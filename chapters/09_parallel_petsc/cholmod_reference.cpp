@@ -1,0 +1,29 @@
+#include "cholmod_reference.hpp"
+
+#include "common/contact/bilateral_contact.hpp"
+#include "common/contact/dual_condensation.hpp"
+#include "common/contact/saddle_point.hpp"
+#include "common/fem/dirichlet.hpp"
+#include "common/linalg/physical_limit.hpp"
+#include "common/timing/stopwatch.hpp"
+
+namespace chapter09 {
+
+CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::SceneData& scene,
+                             const mortar::Constraints& constraints, const Eigen::VectorXd& G) {
+  CholmodAnswer a;
+  const mortar::Stopwatch clock;
+  const mortar::ReducedSystem system = mortar::eliminate_dirichlet(bodies.stiffness(), scene.F, scene.dirichlet);
+  mortar::CondensedContact condensed =
+      mortar::condense_contact(mortar::reduce_to_free_dofs(system, constraints, G));
+  const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, {});
+  a.time_s = clock.seconds();
+  a.u = system.expand(x.u);
+  a.lambda = x.lambda;
+  a.active = x.active;
+  a.steps = x.iterations;
+  a.limit_s = mortar::measure_physical_limit([&] { return mortar::two_body_limit_matrix(bodies, scene); });
+  return a;
+}
+
+}  // namespace chapter09

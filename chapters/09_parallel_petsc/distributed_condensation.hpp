@@ -1,0 +1,40 @@
+// Step 4 of chapter 9: chapter 6's condensation on the distributed matrix.
+//
+// The contact line is one-dimensional and small, so every rank builds it whole, as chapter 6
+// does (traces, merged grid, dual basis, the rows of B and the weighted gap G). Then, as in
+// common/contact/dual_condensation.hpp, the weighted gap w_i = (B u - G)_i replaces the
+// non-mortar normal dof s_i of each row:
+//
+//     u = T v + g,   u_{s_i} = (G_i + w_i - (B_r u)_i) / b_i,   T = I elsewhere,
+//
+// and the unknowns v solve A v = r with A = T^T K T (one MatPtAP) and r = T^T (f - K g). One
+// change from chapter 6: the unknown at s_i is w_i / b_i, a length like the displacements
+// around it, not w_i (a length times b_i ~ h). The rows of A then have one scale, which
+// algebraic multigrid needs; with w_i itself the pivot rows were 1/h^2 times the others and
+// GAMG's iterations grew from 87 to 172 over three levels (7k to 108k dofs). Each rank writes
+// the rows of T it owns: the identity, or for a pivot 1 and -B_ik / b_i.
+#pragma once
+
+#include <petscmat.h>
+
+#include <vector>
+
+#include "common/contact/constraints.hpp"
+#include "distributed_system.hpp"
+
+namespace chapter09 {
+
+struct DistributedCondensation {
+  std::vector<PetscInt> pivots;  // s_i of each row i, global dofs (every rank has all)
+  std::vector<double> b;         // b_i = B(i, s_i): w_i = b_i v_{s_i}
+  Mat T = nullptr, A = nullptr;
+  Vec g = nullptr, r = nullptr;
+  ~DistributedCondensation();
+};
+
+// B and G in the course's global numbering (constraint_rows, tested_gap); B must be diagonal on
+// the pivots (a dual basis), as condense_contact requires.
+void condense(DistributedCondensation& c, const DistributedSystem& s, const mortar::Constraints& constraints,
+              const Eigen::VectorXd& G);
+
+}  // namespace chapter09

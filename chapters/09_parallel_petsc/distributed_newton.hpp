@@ -1,0 +1,42 @@
+// Step 5 of chapter 9: chapter 6's semismooth Newton method on the condensed system, each step
+// one Krylov solve (KSP) instead of one Cholesky factorization.
+//
+// As in solve_dual_contact (common/contact/dual_condensation.cpp): guess the active set
+// {i : lambda_i + c_i w_i > 0} (c_i = A_{s_i s_i}); fix w = 0 there (its rows and columns of A
+// zeroed, MatZeroRowsColumns), leave w free elsewhere; solve; read lambda = (r - A v) at the
+// active pivots; stop when the set repeats. The pivots' values are gathered on every rank (the
+// contact line is small), so every rank takes the same decision.
+//
+// The linear solver is PETSc's: by default CG preconditioned by smoothed-aggregation AMG
+// (GAMG) told the rigid-body modes of the two bodies (MatNullSpaceCreateRigidBody), or any
+// -ksp_type / -pc_type given on the command line (MUMPS's Cholesky: -pc_type cholesky
+// -pc_factor_mat_solver_type mumps).
+#pragma once
+
+#include <petscksp.h>
+
+#include <vector>
+
+#include "distributed_condensation.hpp"
+
+namespace chapter09 {
+
+struct NewtonOptions {
+  double ksp_rtol = 1e-12;  // each solve: ||residual|| <= rtol ||rhs||
+  int max_steps = 50;
+};
+
+struct NewtonResult {
+  std::vector<double> lambda, w;  // per row of B (every rank)
+  std::vector<bool> active;
+  std::vector<int> ksp_iterations;  // per Newton step
+  int steps = 0;
+  Vec u = nullptr;  // u = T v + g, distributed
+  std::string ksp_type, pc_type;  // what PETSc ran (after the command line's options)
+  ~NewtonResult();
+};
+
+void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
+                   const NewtonOptions& o);
+
+}  // namespace chapter09

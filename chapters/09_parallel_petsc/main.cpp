@@ -1,0 +1,235 @@
+// Chapter 9: chapter 6's contact problem (dual mortar basis, weighted gap, semismooth Newton)
+// on PETSc under MPI. Run as
+//
+//   mpirun -n 2 build/ch09_parallel_petsc --quick
+//   mpirun -n 2 build/ch09_parallel_petsc --n0 48 --levels 2 -ksp_monitor -log_view
+//   mpirun -n 2 build/ch09_parallel_petsc -pc_type cholesky -pc_factor_mat_solver_type mumps
+//
+// The steps, in lecture order:
+//   1. the command line, split between the course and PETSc (petsc_options.cpp);
+//   2. the bodies' stiffness assembled where its rows live (distributed_system.cpp);
+//   3. the contact line, whole on every rank: chapter 6's dual basis and the rows of B;
+//   4. the condensation A = T^T K T on the distributed matrix (distributed_condensation.cpp);
+//   5. the semismooth Newton method, one Krylov solve per step (distributed_newton.cpp);
+//   6. chapter 6's CHOLMOD answer on rank 0, and the differences (cholmod_reference.cpp).
+#include <petscksp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "cholmod_reference.hpp"
+#include "common/contact/constraints.hpp"
+#include "common/contact/contact_scenes.hpp"
+#include "common/study/bilateral_study.hpp"
+#include "common/study/convergence_study.hpp"
+#include "common/study/json_writer.hpp"
+#include "common/study/options.hpp"
+#include "common/timing/stopwatch.hpp"
+#include "distributed_condensation.hpp"
+#include "distributed_newton.hpp"
+#include "petsc_check.hpp"
+#include "petsc_options.hpp"
+
+namespace {
+
+struct Options : mortar::TwoBodyOptions {
+  int n0 = 12, levels = 3;
+  double delta = 0.02, R = 1;
+  double ksp_rtol = 1e-12;
+  bool no_reference = false, quick = false, no_plot = false;
+  std::string out = "results/ch09_parallel_petsc";
+};
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
+  o.H1 = o.H2 = 1;  // chapter 5's Hertz scene: square blocks of one material
+  o.E2 = 1;
+  o.nu2 = 0.3;
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", mortar::Range::closed(2, 1 << 14));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time", mortar::Range::closed(1, 10));
+  mortar::add_two_body_options(parser, o);
+  parser.add_double("delta", o.delta, "downward displacement of the top of body 1 [m]", mortar::Range::closed(0, 1e6));
+  parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m]", mortar::Range::closed(1e-6, 1e12));
+  parser.add_double("ksp-rtol", o.ksp_rtol, "relative tolerance of each Krylov solve",
+                    mortar::Range::closed(1e-15, 1e-2));
+  parser.add_flag("no-reference", o.no_reference, "skip chapter 6's CHOLMOD answer and the physical limit (large runs)");
+  parser.add_string("out", o.out, "output folder (written by rank 0)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 2; not with --n0 or --levels)");
+  parser.add_flag("no-plot", o.no_plot, "write data but run no plotting");
+  parser.parse(argc, argv);
+  parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 2}});
+  mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);
+  mortar::check_stiffness_ratio(parser, o);
+  if (o.delta >= o.H1) parser.fail("delta", "delta must stay below the height of body 1 (small strain)");
+}
+
+// The largest |a - b| over the largest |b|.
+double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const double scale = b.cwiseAbs().maxCoeff();
+  return scale > 0 ? (a - b).cwiseAbs().maxCoeff() / scale : (a - b).cwiseAbs().maxCoeff();
+}
+
+// The distributed u, whole on rank 0 (empty elsewhere).
+Eigen::VectorXd gather_on_rank_0(Vec u) {
+  VecScatter scatter;
+  Vec whole;
+  chapter09::check(VecScatterCreateToZero(u, &scatter, &whole), "VecScatterCreateToZero");
+  chapter09::check(VecScatterBegin(scatter, u, whole, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  chapter09::check(VecScatterEnd(scatter, u, whole, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  PetscInt n = 0;
+  chapter09::check(VecGetLocalSize(whole, &n), "VecGetLocalSize");
+  const PetscScalar* a;
+  chapter09::check(VecGetArrayRead(whole, &a), "VecGetArrayRead");
+  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(a, n);
+  chapter09::check(VecRestoreArrayRead(whole, &a), "VecRestoreArrayRead");
+  VecScatterDestroy(&scatter);
+  VecDestroy(&whole);
+  return out;
+}
+
+// The slowest rank's time for f.
+template <class F>
+double timed(F&& f) {
+  MPI_Barrier(PETSC_COMM_WORLD);
+  const mortar::Stopwatch clock;
+  f();
+  double t = clock.seconds(), slowest = 0;
+  MPI_Allreduce(&t, &slowest, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  return slowest;
+}
+
+int run(const Options& o, const mortar::OptionParser& parser) {
+  const bool root = chapter09::rank() == 0;
+  mortar::ConvergenceTable table;
+  double worst_difference = 0;
+  bool all_identical = true;
+  int ksp_max = 0, newton_last = 0;
+  double ratio_last = std::nan("");
+  for (int level = 0; level < o.levels; ++level) {
+    // The level, whole on every rank: meshes, loads, and the contact line (step 3).
+    const int n1 = o.n0 << level;
+    const mortar::TwoBodies bodies = mortar::make_two_bodies(mortar::two_body_geometry(o, n1, 1.0),
+                                                             mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2));
+    const mortar::SceneData scene = mortar::pressed_between_plates(bodies, o.delta);
+    const mortar::ContactInterface gamma = mortar::make_dual_interface(bodies, o.nonmortar - 1);
+    const mortar::Constraints constraints = mortar::constraint_rows(
+        bodies, gamma, mortar::integral_matching_rows(gamma), scene.prescribed_mask(bodies.num_dofs()));
+    const double L = o.L, R = o.R;
+    const Eigen::VectorXd G = mortar::tested_gap(gamma, constraints, [L, R](double x) {
+      return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R);
+    });
+
+    // Steps 2, 4 and 5, timed together: the whole distributed contact solve.
+    chapter09::DistributedSystem system;
+    chapter09::DistributedCondensation condensed;
+    chapter09::NewtonResult newton;
+    chapter09::NewtonOptions newton_options;
+    newton_options.ksp_rtol = o.ksp_rtol;
+    const double time_s = timed([&] {
+      chapter09::assemble(system, bodies, scene);
+      chapter09::condense(condensed, system, constraints, G);
+      chapter09::solve_contact(newton, system, condensed, newton_options);
+    });
+    const Eigen::VectorXd u = gather_on_rank_0(newton.u);
+    const int ksp = *std::max_element(newton.ksp_iterations.begin(), newton.ksp_iterations.end());
+    ksp_max = std::max(ksp_max, ksp);
+    newton_last = newton.steps;
+
+    mortar::Row row = {{"h", bodies.max_edge_length()},
+                       {"dofs", bodies.num_dofs()},
+                       {"multipliers", static_cast<double>(newton.lambda.size())},
+                       {"ranks", chapter09::ranks()},
+                       {"newton_steps", newton.steps},
+                       {"ksp_iterations_max", ksp},
+                       {"time_s", time_s}};
+    if (!o.no_reference) {
+      // Step 6: chapter 6's answer (rank 0), and how far the distributed one is from it.
+      double difference = 0, limit_s = 0, cholmod_s = 0;
+      int identical = 1;
+      if (root) {
+        const chapter09::CholmodAnswer a = chapter09::cholmod_answer(bodies, scene, constraints, G);
+        const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(newton.lambda.data(), a.lambda.size());
+        difference = std::max(relative_difference(u, a.u), relative_difference(lambda, a.lambda));
+        identical = newton.active == a.active;
+        limit_s = a.limit_s;
+        cholmod_s = a.time_s;
+      }
+      MPI_Bcast(&difference, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+      MPI_Bcast(&identical, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+      MPI_Bcast(&limit_s, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+      worst_difference = std::max(worst_difference, difference);
+      all_identical = all_identical && identical;
+      ratio_last = time_s / limit_s;
+      row.push_back({"cholmod_time_s", cholmod_s});
+      row.push_back({"limit_s", limit_s});
+      row.push_back({"max_rel_diff_vs_cholmod", difference});
+      row.push_back({"active_set_identical", identical});
+    }
+    table.add(row);
+    if (root) {
+      std::printf("level %d: %d dofs, %d ranks, %d Newton steps, Krylov iterations per step:", level,
+                  bodies.num_dofs(), chapter09::ranks(), newton.steps);
+      for (int k : newton.ksp_iterations) std::printf(" %d", k);
+      std::printf(" (%s + %s), %.3g s", newton.ksp_type.c_str(), newton.pc_type.c_str(), time_s);
+      if (!o.no_reference)
+        std::printf("; against chapter 6 (CHOLMOD): max relative difference %.2e, active set %s, %.2f x the limit",
+                    table.column("max_rel_diff_vs_cholmod").back(),
+                    table.column("active_set_identical").back() > 0 ? "identical" : "DIFFERENT", ratio_last);
+      std::printf("\n");
+    }
+  }
+  if (root) {
+    mortar::JsonObject results;
+    results.set("ranks", chapter09::ranks())
+        .set("dofs", table.column("dofs").back())
+        .set("newton_steps", newton_last)
+        .set("ksp_iterations_max", ksp_max);
+    if (!o.no_reference)
+      results.set("max_rel_diff_vs_cholmod", worst_difference)
+          .set("active_set_identical", all_identical)
+          .set("limit_ratio", ratio_last);
+    table.write_csv(o.out + "/convergence.csv");
+    mortar::write_summary(o.out + "/summary.json", parser, {}, results);
+    std::printf("wrote %s\n", o.out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  chapter09::SplitArguments args = chapter09::split_arguments(argc, argv);
+  std::vector<char*> petsc_argv = chapter09::argv_of(args.petsc);
+  int petsc_argc = static_cast<int>(args.petsc.size());
+  char** petsc_pointer = petsc_argv.data();
+  if (PetscInitialize(&petsc_argc, &petsc_pointer, nullptr, nullptr) != 0) return 1;
+  // One voice: the other ranks' output would repeat rank 0's.
+  if (chapter09::rank() != 0 &&
+      (std::freopen("/dev/null", "w", stdout) == nullptr || std::freopen("/dev/null", "w", stderr) == nullptr))
+    return 1;
+  int status = 0;
+  try {
+    // 1. Options, checked before any work starts (PETSc's by a trial solve).
+    Options o;
+    mortar::OptionParser parser("ch09_parallel_petsc",
+                                "Chapter 6's unilateral contact (dual mortar basis, semismooth Newton) on PETSc under "
+                                "MPI: distributed assembly, condensation, CG + GAMG; checked against chapter 6.");
+    std::vector<char*> course_argv = chapter09::argv_of(args.course);
+    parse_options(parser, o, static_cast<int>(args.course.size()), course_argv.data());
+    const std::string unused = chapter09::unused_petsc_options();
+    if (!unused.empty()) {
+      std::fprintf(stderr, "ch09_parallel_petsc: PETSc does not know or does not use %s (PETSc's options take one "
+                           "dash: -ksp_type, -pc_type, ...; the course's two)\n", unused.c_str());
+      status = 2;
+    } else {
+      if (chapter09::rank() == 0) mortar::prepare_output_folder(parser, o.out);
+      status = run(o, parser);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ch09_parallel_petsc: error: %s\n", e.what());
+    status = 1;
+  }
+  PetscFinalize();
+  return status;
+}

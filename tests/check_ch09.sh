@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Chapter 9 on RANKS ranks against chapter 6: the run ends with status 0, writes the output
+# contract's keys, and its answer equals chapter 6's CHOLMOD answer (displacements and
+# multipliers within 1e-8 relative, the same active set) whatever the number of ranks.
+#
+#   check_ch09.sh MPIEXEC RANKS PROGRAM OUT_DIR
+set -u
+mpiexec=$1 ranks=$2 program=$3 out=$4
+rm -rf "$out"
+output=$("$mpiexec" --oversubscribe -n "$ranks" "$program" --quick --no-plot --out "$out" 2>&1)
+status=$?
+printf '%s\n' "$output" | tail -n 4
+fail() { echo "check_ch09: $1" >&2; exit 1; }
+[ "$status" -eq 0 ] || fail "exit status $status"
+json=$(cat "$out/summary.json") || fail "no summary.json"
+value() { printf '%s\n' "$json" | sed -n "s/.*\"$1\": \([^,}]*\).*/\1/p" | head -n 1; }
+[ "$(value ranks)" = "$ranks" ] || fail "results.ranks is '$(value ranks)', expected $ranks"
+[ "$(value active_set_identical)" = "true" ] || fail "the active set differs from chapter 6's"
+diff=$(value max_rel_diff_vs_cholmod)
+awk -v d="$diff" 'BEGIN { exit !(d != "" && d + 0 <= 1e-8) }' || fail "max_rel_diff_vs_cholmod = '$diff' > 1e-8"
+for key in ksp_iterations_max limit_ratio newton_steps; do
+  [ -n "$(value $key)" ] || fail "results.$key missing"
+done
+grep -q '"nan\|inf' "$out"/*.csv "$out"/*.json && fail "NaN or inf written"
+echo "check_ch09: $ranks ranks, max relative difference $diff, active set identical"

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Chapter 9 refuses bad input like every program: status 2, a message naming the problem,
+# nothing written; a PETSc option that PETSc does not know is refused, not ignored.
+#
+#   check_ch09_refusals.sh MPIEXEC PROGRAM OUT_DIR
+set -u
+mpiexec=$1 program=$2 out=$3
+failures=0
+expect_refused() {  # EXPECTED_TEXT ARGS...
+  local text=$1
+  shift
+  rm -rf "$out"
+  local output status
+  output=$("$mpiexec" -n 2 "$program" --no-plot --out "$out" "$@" 2>&1)
+  status=$?
+  if [ "$status" -ne 2 ] || ! printf '%s' "$output" | grep -qF -- "$text" || [ -e "$out" ]; then
+    echo "not refused as expected (status $status, wanted 2 and '$text'): $*" >&2
+    printf '%s\n' "$output" | tail -n 5 >&2
+    failures=$((failures + 1))
+  fi
+}
+expect_refused "PETSc does not know or does not use -ksp_tipe" --quick -ksp_tipe cg
+expect_refused "PETSc does not know or does not use -pc_gamg_treshold" --quick -pc_gamg_treshold 0.01
+expect_refused "--bogus: unknown option" --quick --bogus
+expect_refused "--E1" --quick --E1 -1
+expect_refused "--nu2" --quick --nu2 0.5
+expect_refused "--n0" --n0 0
+expect_refused "--levels" --quick --levels 3
+expect_refused "--ksp-rtol" --quick --ksp-rtol 0
+expect_refused "--delta" --quick --delta 2
+expect_refused "--E1" --quick --E1 1e11
+[ "$failures" -eq 0 ] || exit 1
+echo "check_ch09_refusals: every bad input refused with status 2, nothing written"
