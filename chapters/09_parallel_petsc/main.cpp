@@ -11,7 +11,8 @@
 //   3. the contact line, whole on every rank: chapter 6's dual basis and the rows of B;
 //   4. the condensation A = T^T K T on the distributed matrix (distributed_condensation.cpp);
 //   5. the semismooth Newton method, one Krylov solve per step (distributed_newton.cpp);
-//   6. chapter 6's CHOLMOD answer on rank 0, and the differences (cholmod_reference.cpp).
+//   6. chapter 6's CHOLMOD answer on rank 0, and the differences (cholmod_reference.cpp);
+//   7. the table, summary.json and the figures, by rank 0 (figures.cpp).
 #include <petscksp.h>
 
 #include <algorithm>
@@ -29,13 +30,14 @@
 #include "common/timing/stopwatch.hpp"
 #include "distributed_condensation.hpp"
 #include "distributed_newton.hpp"
+#include "figures.hpp"
 #include "petsc_check.hpp"
 #include "petsc_options.hpp"
 
 namespace {
 
 struct Options : mortar::TwoBodyOptions {
-  int n0 = 12, levels = 3;
+  int n0 = 12, levels = 5;
   double delta = 0.02, R = 1;
   double ksp_rtol = 1e-12;
   bool no_reference = false, quick = false, no_plot = false;
@@ -56,7 +58,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_flag("no-reference", o.no_reference, "skip chapter 6's CHOLMOD answer and the physical limit (large runs)");
   parser.add_string("out", o.out, "output folder (written by rank 0)");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 2; not with --n0 or --levels)");
-  parser.add_flag("no-plot", o.no_plot, "write data but run no plotting");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
   parser.parse(argc, argv);
   parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 2}});
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);
@@ -105,7 +107,9 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   double worst_difference = 0;
   bool all_identical = true;
   int ksp_max = 0, newton_last = 0;
-  double ratio_last = std::nan("");
+  double ratio_last = std::nan(""), limit_last = std::nan("");
+  std::vector<std::vector<int>> iterations;  // per level, per Newton step
+  std::string solver;
   for (int level = 0; level < o.levels; ++level) {
     // The level, whole on every rank: meshes, loads, and the contact line (step 3).
     const int n1 = o.n0 << level;
@@ -135,6 +139,8 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     const int ksp = *std::max_element(newton.ksp_iterations.begin(), newton.ksp_iterations.end());
     ksp_max = std::max(ksp_max, ksp);
     newton_last = newton.steps;
+    iterations.push_back(newton.ksp_iterations);
+    solver = newton.ksp_type + " + " + newton.pc_type;
 
     mortar::Row row = {{"h", bodies.max_edge_length()},
                        {"dofs", bodies.num_dofs()},
@@ -161,9 +167,12 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       worst_difference = std::max(worst_difference, difference);
       all_identical = all_identical && identical;
       ratio_last = time_s / limit_s;
+      limit_last = limit_s;
       row.push_back({"cholmod_time_s", cholmod_s});
       row.push_back({"limit_s", limit_s});
       row.push_back({"max_rel_diff_vs_cholmod", difference});
+      // the difference to chapter 6 as the table's error column: round-off, no rate expected
+      row.push_back({"err_vs_cholmod", difference});
       row.push_back({"active_set_identical", identical});
     }
     table.add(row);
@@ -188,9 +197,11 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     if (!o.no_reference)
       results.set("max_rel_diff_vs_cholmod", worst_difference)
           .set("active_set_identical", all_identical)
-          .set("limit_ratio", ratio_last);
+          .set("limit_ratio", ratio_last)
+          .set("limit_s", limit_last);
     table.write_csv(o.out + "/convergence.csv");
-    mortar::write_summary(o.out + "/summary.json", parser, {}, results);
+    chapter09::plot_solves(o.out, table, iterations, solver, o.ksp_rtol, !o.no_plot);
+    mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
     std::printf("wrote %s\n", o.out.c_str());
   }
   return 0;
