@@ -6,12 +6,15 @@
 set -u
 mpiexec=$1 program=$2 out=$3
 failures=0
-expect_refused() {  # EXPECTED_TEXT ARGS...
-  local text=$1
-  shift
+# RANKS EXPECTED_TEXT ARGS...: 1 rank runs the program alone (MPI's singleton start, a
+# third of mpirun's), 2 ranks under mpirun
+expect_refused() {
+  local ranks=$1 text=$2
+  shift 2
   rm -rf "$out"
-  local output status
-  output=$("$mpiexec" -n 2 "$program" --no-plot --out "$out" "$@" 2>&1)
+  local output status launcher=()
+  [ "$ranks" -eq 1 ] || launcher=("$mpiexec" -n "$ranks")
+  output=$("${launcher[@]}" "$program" --no-plot --out "$out" "$@" 2>&1)
   status=$?
   if [ "$status" -ne 2 ] || ! printf '%s' "$output" | grep -qF -- "$text" || [ -e "$out" ]; then
     echo "not refused as expected (status $status, wanted 2 and '$text'): $*" >&2
@@ -19,15 +22,15 @@ expect_refused() {  # EXPECTED_TEXT ARGS...
     failures=$((failures + 1))
   fi
 }
-expect_refused "PETSc does not know or does not use -ksp_tipe" --quick -ksp_tipe cg
-expect_refused "PETSc does not know or does not use -pc_gamg_treshold" --quick -pc_gamg_treshold 0.01
-expect_refused "--bogus: unknown option" --quick --bogus
-expect_refused "--E1" --quick --E1 -1
-expect_refused "--nu2" --quick --nu2 0.5
-expect_refused "--n0" --n0 0
-expect_refused "--levels" --quick --levels 3
-expect_refused "--ksp-rtol" --quick --ksp-rtol 0
-expect_refused "--delta" --quick --delta 2
-expect_refused "--E1" --quick --E1 1e11
+expect_refused 2 "PETSc does not know or does not use -ksp_tipe" --quick -ksp_tipe cg
+expect_refused 1 "PETSc does not know or does not use -pc_gamg_treshold" --quick -pc_gamg_treshold 0.01
+expect_refused 2 "--bogus: unknown option" --quick --bogus
+expect_refused 1 "--E1" --quick --E1 -1
+expect_refused 1 "--nu2" --quick --nu2 0.5
+expect_refused 1 "--n0" --n0 0
+expect_refused 1 "--levels" --quick --levels 3
+expect_refused 1 "--ksp-rtol" --quick --ksp-rtol 0
+expect_refused 1 "--delta" --quick --delta 2
+expect_refused 1 "--E1" --quick --E1 1e11
 [ "$failures" -eq 0 ] || exit 1
 echo "check_ch09_refusals: every bad input refused with status 2, nothing written"
