@@ -42,12 +42,17 @@ class PivotGather {
   VecScatter scatter_ = nullptr;
 };
 
-// CG + GAMG with the rigid-body modes unless the command line says otherwise.
+// The solver of configure_krylov_solver, with the rigid-body modes of the bodies attached to A.
 void configure(KSP ksp, Mat A, const DistributedSystem& s, double rtol) {
   MatNullSpace modes;
   check(MatNullSpaceCreateRigidBody(s.coordinates, &modes), "MatNullSpaceCreateRigidBody");
   check(MatSetNearNullSpace(A, modes), "MatSetNearNullSpace");
   check(MatNullSpaceDestroy(&modes), "MatNullSpaceDestroy");
+  configure_krylov_solver(ksp, rtol);
+}
+}  // namespace
+
+void configure_krylov_solver(KSP ksp, double rtol) {
   check(KSPSetType(ksp, KSPCG), "KSPSetType");
   PC pc;
   check(KSPGetPC(ksp, &pc), "KSPGetPC");
@@ -55,7 +60,6 @@ void configure(KSP ksp, Mat A, const DistributedSystem& s, double rtol) {
   check(KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000), "KSPSetTolerances");
   check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
 }
-}  // namespace
 
 void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
                    const NewtonOptions& o) {

@@ -36,6 +36,11 @@ struct NewtonResult {
   ~NewtonResult();
 };
 
+// The chapter's Krylov solver before the command line has its say: CG + GAMG to ||r|| <= rtol
+// ||b||, then KSPSetFromOptions. Every solve of the chapter, and the trial solve that checks the
+// PETSc options (petsc_options.cpp), is configured by this one function.
+void configure_krylov_solver(KSP ksp, double rtol);
+
 void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
                    const NewtonOptions& o);
 

@@ -4,6 +4,7 @@
 
 #include <cctype>
 
+#include "distributed_newton.hpp"
 #include "distributed_system.hpp"
 #include "petsc_check.hpp"
 
@@ -70,11 +71,7 @@ std::string unused_petsc_options() {
   KSP ksp;
   check(KSPCreate(PETSC_COMM_WORLD, &ksp), "KSPCreate");
   check(KSPSetOperators(ksp, M, M), "KSPSetOperators");
-  check(KSPSetType(ksp, KSPCG), "KSPSetType");
-  PC pc;
-  check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCGAMG), "PCSetType");
-  check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+  configure_krylov_solver(ksp, 1e-8);
   check(MatSetFromOptions(M), "MatSetFromOptions");
   check(VecSetFromOptions(x), "VecSetFromOptions");
   check(KSPSetUp(ksp), "KSPSetUp (a trial of the PETSc options)");
