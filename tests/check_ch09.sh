@@ -3,11 +3,12 @@
 # contract's keys, and its answer equals chapter 6's CHOLMOD answer (displacements and
 # multipliers within 1e-8 relative, the same active set) whatever the number of ranks.
 #
-#   check_ch09.sh MPIEXEC RANKS PROGRAM OUT_DIR
+#   check_ch09.sh MPIEXEC RANKS PROGRAM OUT_DIR [OPTION...]
 set -u
 mpiexec=$1 ranks=$2 program=$3 out=$4
+shift 4
 rm -rf "$out"
-output=$("$mpiexec" --oversubscribe -n "$ranks" "$program" --quick --no-plot --out "$out" 2>&1)
+output=$("$mpiexec" --oversubscribe -n "$ranks" "$program" --quick --no-plot --out "$out" "$@" 2>&1)
 status=$?
 printf '%s\n' "$output" | tail -n 4
 fail() { echo "check_ch09: $1" >&2; exit 1; }

@@ -31,6 +31,8 @@ expect_refused 1 "--n0" --n0 0
 expect_refused 1 "--levels" --quick --levels 3
 expect_refused 1 "--ksp-rtol" --quick --ksp-rtol 0
 expect_refused 1 "--delta" --quick --delta 2
+expect_refused 1 "--loose-rtol" --quick --loose-rtol 0.5
+expect_refused 1 "--reference" --quick --reference exact
 expect_refused 1 "--E1" --quick --E1 1e11
 expect_refused 1 "GB of memory, 145 GB of it for the distributed solve" --n0 1024 --levels 3
 [ "$failures" -eq 0 ] || exit 1

@@ -22,8 +22,12 @@ CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::Scen
   a.lambda = x.lambda;
   a.active = x.active;
   a.steps = x.iterations;
-  a.limit_s = mortar::measure_physical_limit([&] { return mortar::two_body_limit_matrix(bodies, scene); });
+  a.limit_s = physical_limit(bodies, scene);
   return a;
+}
+
+double physical_limit(const mortar::TwoBodies& bodies, const mortar::SceneData& scene) {
+  return mortar::measure_physical_limit([&] { return mortar::two_body_limit_matrix(bodies, scene); });
 }
 
 }  // namespace chapter09

@@ -22,6 +22,9 @@ struct CholmodAnswer {
   double limit_s = 0;  // the physical limit of the level
 };
 
+// The physical limit of the level alone (for sizes where chapter 6's answer takes too long).
+double physical_limit(const mortar::TwoBodies& bodies, const mortar::SceneData& scene);
+
 CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::SceneData& scene,
                              const mortar::Constraints& constraints, const Eigen::VectorXd& G);
 

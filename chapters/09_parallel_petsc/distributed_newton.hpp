@@ -22,15 +22,20 @@
 namespace chapter09 {
 
 struct NewtonOptions {
-  double ksp_rtol = 1e-12;  // each solve: ||residual|| <= rtol ||rhs||
-  int max_steps = 50;
+  double ksp_rtol = 1e-12;    // the final solve: ||residual|| <= rtol ||rhs||
+  double loose_rtol = 1e-2;   // a solve while the active set still moves: ||residual|| <= rtol ||initial
+                              // residual|| (an inexact Newton method); the set's repeat is solved again
+                              // to ksp_rtol
+  bool reuse_preconditioner = false;  // GAMG built on the first step's A, kept for every step
+  int max_steps = 50;          // Krylov solves
 };
 
 struct NewtonResult {
   std::vector<double> lambda, w;  // per row of B (every rank)
   std::vector<bool> active;
-  std::vector<int> ksp_iterations;  // per Newton step
-  int steps = 0;
+  std::vector<int> ksp_iterations;  // per Krylov solve
+  std::vector<bool> tight;          // per Krylov solve: to the final tolerance
+  int steps = 0;                    // Newton steps: the active sets solved for, as in chapter 6
   Vec u = nullptr;  // u = T v + g, distributed
   std::string ksp_type, pc_type;  // what PETSc ran (after the command line's options)
   ~NewtonResult();
