@@ -9,8 +9,7 @@
 namespace chapter09 {
 
 DistributedCondensation::~DistributedCondensation() {
-  for (Mat* m : {&T, &A})
-    if (*m != nullptr) MatDestroy(m);
+  if (T != nullptr) MatDestroy(&T);
   for (Vec* v : {&g, &r})
     if (*v != nullptr) VecDestroy(v);
 }
@@ -51,9 +50,7 @@ void condense(DistributedCondensation& c, const DistributedSystem& s, const mort
   check(VecAssemblyBegin(c.g), "VecAssemblyBegin");
   check(VecAssemblyEnd(c.g), "VecAssemblyEnd");
 
-  // A = T^T K T, r = T^T (f - K g)
-  check(MatPtAP(s.K, c.T, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &c.A), "MatPtAP");
-  check(MatSetOption(c.A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  // r = T^T (f - K g); A = T^T K T is applied, never formed (condensed_solver.hpp)
   Vec y;
   check(VecDuplicate(s.f, &y), "VecDuplicate");
   check(MatMult(s.K, c.g, y), "MatMult");

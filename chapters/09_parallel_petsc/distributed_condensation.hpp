@@ -7,12 +7,12 @@
 //
 //     u = T v + g,   u_{s_i} = (G_i + w_i - (B_r u)_i) / b_i,   T = I elsewhere,
 //
-// and the unknowns v solve A v = r with A = T^T K T (one MatPtAP) and r = T^T (f - K g). One
-// change from chapter 6: the unknown at s_i is w_i / b_i, a length like the displacements
-// around it, not w_i (a length times b_i ~ h). The rows of A then have one scale, which
-// algebraic multigrid needs; with w_i itself the pivot rows were 1/h^2 times the others and
-// GAMG's iterations grew from 87 to 172 over three levels (7k to 108k dofs). Each rank writes
-// the rows of T it owns: the identity, or for a pivot 1 and -B_ik / b_i.
+// and the unknowns v solve A v = r with A = T^T K T and r = T^T (f - K g). One change from
+// chapter 6: the unknown at s_i is w_i / b_i, a length like the displacements around it, not
+// w_i. Then T's pivot entry is 1, T = I - E with E nonzero only in pivot rows and non-pivot
+// columns, and T^{-1} = I + E: the preconditioner of condensed_solver.hpp needs it. Each rank
+// writes the rows of T it owns: the identity, or for a pivot 1 and -B_ik / b_i. A itself is
+// never formed (condensed_solver.hpp): its products are T^T (K (T x)).
 #pragma once
 
 #include <petscmat.h>
@@ -27,7 +27,7 @@ namespace chapter09 {
 struct DistributedCondensation {
   std::vector<PetscInt> pivots;  // s_i of each row i, global dofs (every rank has all)
   std::vector<double> b;         // b_i = B(i, s_i): w_i = b_i v_{s_i}
-  Mat T = nullptr, A = nullptr;
+  Mat T = nullptr;
   Vec g = nullptr, r = nullptr;
   ~DistributedCondensation();
 };

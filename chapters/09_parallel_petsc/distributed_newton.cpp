@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/timing/stopwatch.hpp"
+#include "condensed_solver.hpp"
 #include "petsc_check.hpp"
 
 namespace chapter09 {
@@ -43,26 +45,6 @@ class PivotGather {
   VecScatter scatter_ = nullptr;
 };
 
-// The solver of configure_krylov_solver, with the rigid-body modes of the bodies attached to A.
-void configure(KSP ksp, Mat A, const DistributedSystem& s, double rtol) {
-  MatNullSpace modes;
-  check(MatNullSpaceCreateRigidBody(s.coordinates, &modes), "MatNullSpaceCreateRigidBody");
-  check(MatSetNearNullSpace(A, modes), "MatSetNearNullSpace");
-  check(MatNullSpaceDestroy(&modes), "MatNullSpaceDestroy");
-  configure_krylov_solver(ksp, rtol);
-}
-}  // namespace
-
-void configure_krylov_solver(KSP ksp, double rtol) {
-  check(KSPSetType(ksp, KSPCG), "KSPSetType");
-  PC pc;
-  check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCGAMG), "PCSetType");
-  check(KSPSetTolerances(ksp, rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000), "KSPSetTolerances");
-  check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
-}
-
-namespace {
 // The rows of the active pivots this rank owns.
 std::vector<PetscInt> owned_active(const DistributedCondensation& c, const std::vector<bool>& active, Vec like) {
   PetscInt first, last;
@@ -87,76 +69,42 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   PivotGather at_pivots(c.r, c.pivots);
   Vec diagonal, v, rhs, Av;
   check(VecDuplicate(c.r, &diagonal), "VecDuplicate");
-  check(MatGetDiagonal(c.A, diagonal), "MatGetDiagonal");
-  const std::vector<double> c_i = at_pivots(diagonal);  // c_i = A_{s_i s_i}
+  check(MatGetDiagonal(s.K, diagonal), "MatGetDiagonal");
+  // c_i = A_{s_i s_i} = K_{s_i s_i}: column s_i of T is the unit vector
+  const std::vector<double> c_i = at_pivots(diagonal);
   check(VecDestroy(&diagonal), "VecDestroy");
   for (Vec* x : {&v, &rhs, &Av}) check(VecDuplicate(c.r, x), "VecDuplicate");
   check(VecSet(v, 0.0), "VecSet");
 
-  // One matrix for every step (A with the active rows and columns zeroed), one solver.
-  Mat A_step;
-  check(MatDuplicate(c.A, MAT_COPY_VALUES, &A_step), "MatDuplicate");
-  KSP ksp;
-  check(KSPCreate(PETSC_COMM_WORLD, &ksp), "KSPCreate");
-  check(KSPSetOperators(ksp, A_step, A_step), "KSPSetOperators");
-  configure(ksp, A_step, s, o.ksp_rtol);
-  PetscReal configured_rtol;
-  check(KSPGetTolerances(ksp, &configured_rtol, nullptr, nullptr, nullptr), "KSPGetTolerances");
-  // the command line's -ksp_rtol, if any, is the final tolerance
-  const double final_rtol = configured_rtol, loose_rtol = std::max(o.loose_rtol, final_rtol);
-  check(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE), "KSPSetInitialGuessNonzero");
-  {
-    KSPType kt;
-    PC pc;
-    PCType pt;
-    check(KSPGetType(ksp, &kt), "KSPGetType");
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCGetType(pc, &pt), "PCGetType");
-    out.ksp_type = kt;
-    out.pc_type = pt;
-  }
+  // GAMG (or the command line's preconditioner) on K, built once: K never changes
+  CondensedSolver solver(s.K, c.T, o.ksp_rtol);
+  const mortar::Stopwatch clock;
+  solver.set_up();
+  out.setup_s = clock.seconds();
+  out.ksp_type = solver.ksp_type();
+  out.pc_type = solver.pc_type();
+  const double final_rtol = solver.final_rtol(), loose_rtol = std::max(o.loose_rtol, final_rtol);
 
   out.active.assign(static_cast<std::size_t>(m), false);
   bool tight = loose_rtol <= final_rtol, repeat = false;
-  for (int solve = 1; solve <= o.max_steps; ++solve) {
-    // One Newton step: w_A = 0 (rows and columns of A zeroed), one Krylov solve from the last v.
+  for (int solve = 1; solve <= o.max_solves; ++solve) {
+    // One Newton step: w_A = 0, one Krylov solve from the last v
     const std::vector<PetscInt> fixed = owned_active(c, out.active, rhs);
-    if (solve > 1) check(MatCopy(c.A, A_step, SAME_NONZERO_PATTERN), "MatCopy");
-    check(MatZeroRowsColumns(A_step, static_cast<PetscInt>(fixed.size()), fixed.data(), s.diagonal, nullptr, nullptr),
-          "MatZeroRowsColumns (active set)");
+    solver.fix(fixed);
     check(VecCopy(c.r, rhs), "VecCopy");
     zero_rows(rhs, fixed);
     zero_rows(v, fixed);
-    // GAMG's hierarchy is built once, on the first step's A (no pivot fixed), and kept; or
-    // built again from scratch (a rebuild on top of the old one keeps stale smoother estimates)
-    if (solve > 1 && o.reuse_preconditioner) {
-      check(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
-    } else if (solve > 1) {
-      check(KSPReset(ksp), "KSPReset");
-      check(KSPSetOperators(ksp, A_step, A_step), "KSPSetOperators");
+    int iterations = 0;
+    try {
+      iterations = solver.solve(rhs, v, tight ? final_rtol : loose_rtol, !tight);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("Newton step " + std::to_string(out.steps + 1) + ": " + e.what());
     }
-    check(KSPSetTolerances(ksp, tight ? final_rtol : loose_rtol, PETSC_DEFAULT, PETSC_DEFAULT, 10000),
-          "KSPSetTolerances");
-    // A loose solve reduces its own initial residual (the last v is close); the final one
-    // reaches rtol ||B r||, B the preconditioner, as every chapter-6 comparison assumes.
-    void* test;
-    check(KSPConvergedDefaultCreate(&test), "KSPConvergedDefaultCreate");
-    check(KSPSetConvergenceTest(ksp, KSPConvergedDefault, test, KSPConvergedDefaultDestroy), "KSPSetConvergenceTest");
-    if (!tight) check(KSPConvergedDefaultSetUIRNorm(ksp), "KSPConvergedDefaultSetUIRNorm");
-    check(KSPSolve(ksp, rhs, v), "KSPSolve");
-    KSPConvergedReason reason;
-    check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
-    PetscInt iterations = 0;
-    check(KSPGetIterationNumber(ksp, &iterations), "KSPGetIterationNumber");
-    if (reason < 0)
-      throw std::runtime_error("Newton step " + std::to_string(out.steps + 1) +
-                               ": the Krylov solve did not converge (" + KSPConvergedReasons[reason] + " after " +
-                               std::to_string(iterations) + " iterations)");
-    out.ksp_iterations.push_back(static_cast<int>(iterations));
+    out.ksp_iterations.push_back(iterations);
     out.tight.push_back(tight);
 
     // lambda = (r - A v) at the active pivots, w = v at every pivot
-    check(MatMult(c.A, v, Av), "MatMult");
+    solver.apply_A(v, Av);
     check(VecAYPX(Av, -1.0, c.r), "VecAYPX");
     // (B T)(i, s_i) = b_i: lambda_i = (r - A v)_{s_i} / b_i, and w_i = b_i v_{s_i}
     const std::vector<double> residual = at_pivots(Av), v_s = at_pivots(v);
@@ -172,7 +120,7 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
     const bool same = next == out.active;
     if (!repeat) ++out.steps;  // a new active set; a repeat is the same step solved tighter
     if (same && tight) break;
-    if (solve == o.max_steps)
+    if (solve == o.max_solves)
       throw std::runtime_error("semismooth Newton: the active set still changed after " + std::to_string(solve) +
                                " solves");
     // The set repeats after a loose solve: solve it again to the final tolerance, and check.
@@ -180,8 +128,6 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
     repeat = same;
     out.active = next;
   }
-  check(KSPDestroy(&ksp), "KSPDestroy");
-  check(MatDestroy(&A_step), "MatDestroy");
   // u = T v + g
   check(VecDuplicate(c.r, &out.u), "VecDuplicate");
   check(MatMult(c.T, v, out.u), "MatMult");

@@ -8,8 +8,10 @@
 
 namespace chapter09 {
 
-Ownership split_by_nodes(PetscInt dofs) {
-  const PetscInt nodes = dofs / 2, n = ranks(), r = rank();
+Ownership split_by_nodes(PetscInt dofs) { return split_by_nodes(dofs, rank(), ranks()); }
+
+Ownership split_by_nodes(PetscInt dofs, int r, int n) {
+  const PetscInt nodes = dofs / 2;
   // the first nodes % n ranks get one node more
   const PetscInt base = nodes / n, extra = nodes % n;
   const PetscInt first_node = r * base + std::min<PetscInt>(r, extra);
@@ -106,6 +108,12 @@ void assemble(DistributedSystem& s, const mortar::TwoBodies& bodies, const morta
   check(MatZeroRowsColumns(s.K, static_cast<PetscInt>(rows.size()), rows.data(), s.diagonal, u_d, s.f),
         "MatZeroRowsColumns (Dirichlet)");
   check(VecDestroy(&u_d), "VecDestroy");
+
+  // the rigid-body modes, for algebraic multigrid (exercise 12)
+  MatNullSpace modes;
+  check(MatNullSpaceCreateRigidBody(s.coordinates, &modes), "MatNullSpaceCreateRigidBody");
+  check(MatSetNearNullSpace(s.K, modes), "MatSetNearNullSpace");
+  check(MatNullSpaceDestroy(&modes), "MatNullSpaceDestroy");
 }
 
 }  // namespace chapter09

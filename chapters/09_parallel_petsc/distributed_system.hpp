@@ -23,7 +23,8 @@ struct Ownership {
   bool owns(PetscInt dof) const { return dof >= first && dof < last; }
   PetscInt local() const { return last - first; }
 };
-Ownership split_by_nodes(PetscInt dofs);
+Ownership split_by_nodes(PetscInt dofs);                  // this rank's
+Ownership split_by_nodes(PetscInt dofs, int rank, int ranks);  // any rank's
 // An empty square AIJ matrix on these rows, block size 2, `per_row` nonzeros expected per row
 // (more are allowed, at the cost of a reallocation).
 Mat create_matrix(const Ownership& rows, PetscInt per_row);

@@ -2,17 +2,20 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
+#include "common/contact/two_bodies.hpp"
 #include "common/study/convergence_study.hpp"
 
 namespace chapter09 {
 
-// iterations.png: the Krylov iterations of every Newton step against the dofs of its level
-// (flat in h would be AMG's promise); time.png: the distributed contact solve, chapter 6's
-// CHOLMOD solve and the physical limit against the dofs.
-void plot_solves(const std::string& folder, const mortar::ConvergenceTable& table,
-                 const std::vector<std::vector<int>>& iterations, const std::string& solver, double rtol,
-                 bool run);
+// iterations.png: the Krylov iterations of each level's contact solve, all solves together and
+// the largest one, against the dofs (flat in h would be AMG's promise); time.png: the
+// distributed contact solve, chapter 6's CHOLMOD solve and the physical limit against the dofs.
+void plot_solves(const std::string& folder, const mortar::ConvergenceTable& table, const std::string& solver,
+                 double rtol, bool run);
+
+// partition.png: the triangles of both bodies, coloured by the rank that integrates them (the
+// owner of their first vertex), as split_by_nodes splits them over `ranks` ranks.
+void plot_partition(const std::string& folder, const mortar::TwoBodies& bodies, int ranks, bool run);
 
 }  // namespace chapter09

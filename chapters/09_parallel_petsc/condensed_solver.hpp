@@ -1,0 +1,69 @@
+// The linear solve of every Newton step of chapter 9, on the condensed system A v = r with
+// A = T^T K T (distributed_condensation.hpp), and w_i = 0 on the active pivots.
+//
+// A is never formed. CG only needs products A x = T^T (K (T x)): one product with K, the
+// assembled stiffness, and two with T, the identity but for its pivot rows. Its preconditioner
+// follows from A^{-1} = T^{-1} K^{-1} T^{-T}: T^{-1} M^{-1} T^{-T}, with M^{-1} PETSc's
+// preconditioner of K itself (GAMG by default, or MUMPS's Cholesky, or any -pc_type). So
+// algebraic multigrid sees an ordinary elasticity matrix with its rigid-body modes, and K does
+// not change from one Newton step to the next: M is built once. T^{-1} costs nothing: T = I - E
+// with E nonzero only in pivot rows and non-pivot columns, so E^2 = 0 and T^{-1} = I + E = 2I - T.
+//
+// A Newton step fixes v = 0 on the active pivots P_A. CG then works on the free unknowns, with
+// the operator and the preconditioner both projected (Pi: zero on P_A):
+//
+//     A_step x = Pi A Pi x + (I - Pi) x,     M_step^{-1} r = Pi T^{-1} M^{-1} T^{-T} Pi r + (I - Pi) r.
+//
+// On the free unknowns the spectrum of M_step^{-1} A_step lies inside that of the unprojected
+// pair (restricting a symmetric pencil to a subspace interlaces its eigenvalues), so fixing
+// pivots never makes the preconditioner worse.
+#pragma once
+
+#include <petscksp.h>
+
+#include <string>
+#include <vector>
+
+namespace chapter09 {
+
+class CondensedSolver {
+ public:
+  // K: the stiffness with its near-null space attached (or any SPD matrix); T: u = T v + g, or
+  // nullptr for T = I. `rtol` and the command line configure the solver as every solve of the
+  // chapter is configured: CG outside, GAMG (or the command line's -pc_type) on K inside.
+  CondensedSolver(Mat K, Mat T, double rtol);
+  ~CondensedSolver();
+  CondensedSolver(const CondensedSolver&) = delete;
+  CondensedSolver& operator=(const CondensedSolver&) = delete;
+
+  // Builds the preconditioner of K (once: K does not change).
+  void set_up();
+  // The rows fixed at v = 0 from now on: this rank's active pivots.
+  void fix(const std::vector<PetscInt>& owned_rows) { fixed_ = owned_rows; }
+  // CG on A_step v = rhs from the given v, to ||B r|| <= rtol ||B rhs||, or with `from_start`
+  // to rtol times the initial residual. Returns the iterations; throws if CG failed.
+  int solve(Vec rhs, Vec v, double rtol, bool from_start);
+  // y = A x, nothing fixed.
+  void apply_A(Vec x, Vec y);
+
+  std::string ksp_type() const;
+  std::string pc_type() const;  // of the preconditioner of K
+  double final_rtol() const { return rtol_; }  // after the command line's -ksp_rtol, if any
+
+ private:
+  static PetscErrorCode mult(Mat shell, Vec x, Vec y);
+  static PetscErrorCode precondition(PC pc, Vec r, Vec z);
+  void zero_fixed(Vec x) const;
+  void copy_fixed(Vec from, Vec to) const;
+  void apply_T(Vec x, Vec y, bool transpose, bool inverse);
+
+  Mat K_, T_, shell_ = nullptr;
+  KSP ksp_ = nullptr;
+  PC inner_ = nullptr;
+  Vec x_, u_, Ku_;
+  std::vector<PetscInt> fixed_;
+  PetscInt first_ = 0;
+  double rtol_ = 0;
+};
+
+}  // namespace chapter09
