@@ -12,14 +12,16 @@
 #   bash bench/parallel.sh --ranks 1      # 1 rank; 3 or 4 on this 2-core machine are
 #                                         # oversubscribed, and labelled so
 #   bash bench/parallel.sh --mumps        # MUMPS's parallel Cholesky instead of GAMG (to 1.7M)
-#   bash bench/parallel.sh --keep DIR     # keep each run's output in DIR/<unknowns>/
+#   bash bench/parallel.sh --keep DIR     # keep each run's output in DIR/<n1>/
+#   bash bench/parallel.sh --figure DIR   # and draw DIR/scaling.png (bench/parallel_figure.sh);
+#                                         # figures/ch09_size_table/ holds the one of the notes
 #
 # A benchmark, not a test: it asserts nothing and CI does not run it. It expects
 # build/ch09_parallel_petsc (bash course.sh run ch09, or cmake --build build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ranks=2 large=0 quick=0 mumps=0 keep=""
+ranks=2 large=0 quick=0 mumps=0 keep="" figure=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --ranks) ranks="${2:?--ranks needs a number}"; shift ;;
@@ -27,7 +29,8 @@ while [[ $# -gt 0 ]]; do
     --quick) quick=1 ;;
     --mumps) mumps=1 ;;
     --keep) keep="${2:?--keep needs a folder}"; shift ;;
-    *) echo "parallel.sh: unknown option '$1' (--ranks P, --large, --quick, --mumps, --keep DIR)" >&2; exit 2 ;;
+    --figure) figure="${2:?--figure needs a folder}"; shift ;;
+    *) echo "parallel.sh: unknown option '$1' (--ranks P, --large, --quick, --mumps, --keep DIR, --figure DIR)" >&2; exit 2 ;;
   esac
   shift
 done
@@ -50,7 +53,7 @@ solver=()
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "chapter 9, $label, $([[ $mumps == 1 ]] && echo "MUMPS's Cholesky" || echo "CG + GAMG"), final Krylov tolerance 1e-12"
+echo "chapter 9, $label, $([[ $mumps == 1 ]] && echo "MUMPS's Cholesky" || echo "CG + GAMG"), final Krylov tolerance 1e-13"
 echo
 echo "| unknowns | Newton steps | most iterations of a solve | all iterations | time [s] | memory [B/unknown] | limit [s] | limit's memory [B/unknown] | time / limit | vs chapter 6 |"
 echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
@@ -62,7 +65,8 @@ for row in "${rows[@]}"; do
     echo "| n1 = $n | did not run: $(grep -m1 -i 'error\|needs' "$work/log" || tail -n 1 "$work/log") |"
     continue
   fi
-  [[ -n "$keep" ]] && { mkdir -p "$keep"; cp -r "$out" "$keep/"; cp "$work/log" "$keep/$n/log.txt"; }
+  cp "$work/log" "$out/log.txt"
+  [[ -n "$keep" ]] && { mkdir -p "$keep"; cp -r "$out" "$keep/"; }
   # one data row of convergence.csv, by column name
   awk -F, -v reference="$reference" '
     NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
@@ -81,3 +85,5 @@ done
 echo
 echo "memory: the resident-set peak of all ranks during the distributed solve (meshes included),"
 echo "and of rank 0 during the limit (or chapter 6's answer and the limit), per unknown"
+[[ -n "$figure" ]] && bash bench/parallel_figure.sh "$figure" "$work"
+exit 0

@@ -33,6 +33,7 @@ expect_refused 1 "--ksp-rtol" --quick --ksp-rtol 0
 expect_refused 1 "--delta" --quick --delta 2
 expect_refused 1 "--loose-rtol" --quick --loose-rtol 0.5
 expect_refused 1 "--reference" --quick --reference exact
+expect_refused 1 "--scene" --quick --scene signorini
 expect_refused 1 "--E1" --quick --E1 1e11
 expect_refused 1 "GB of memory, 77.6 GB of it for the distributed solve" --n0 1024 --levels 3
 # the distributed solve fits (15 GB), chapter 6's CHOLMOD on rank 0 would not (28 GB)

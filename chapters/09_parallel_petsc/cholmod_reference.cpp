@@ -10,13 +10,15 @@
 namespace chapter09 {
 
 CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::SceneData& scene,
-                             const mortar::Constraints& constraints, const Eigen::VectorXd& G) {
+                             const mortar::Constraints& constraints, const Eigen::VectorXd& G, bool unilateral) {
   CholmodAnswer a;
   const mortar::Stopwatch clock;
   const mortar::ReducedSystem system = mortar::eliminate_dirichlet(bodies.stiffness(), scene.F, scene.dirichlet);
   mortar::CondensedContact condensed =
       mortar::condense_contact(mortar::reduce_to_free_dofs(system, constraints, G));
-  const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, {});
+  mortar::DualContactOptions options;
+  options.unilateral = unilateral;
+  const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, options);
   a.time_s = clock.seconds();
   a.u = system.expand(x.u);
   a.lambda = x.lambda;

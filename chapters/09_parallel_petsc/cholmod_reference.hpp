@@ -25,7 +25,8 @@ struct CholmodAnswer {
 // The physical limit of the level alone (for sizes where chapter 6's answer takes too long).
 double physical_limit(const mortar::TwoBodies& bodies, const mortar::SceneData& scene);
 
+// `unilateral`: contact (Hertz); otherwise bilateral, w = 0 at every node (manufactured).
 CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::SceneData& scene,
-                             const mortar::Constraints& constraints, const Eigen::VectorXd& G);
+                             const mortar::Constraints& constraints, const Eigen::VectorXd& G, bool unilateral);
 
 }  // namespace chapter09

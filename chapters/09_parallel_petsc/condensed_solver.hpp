@@ -14,9 +14,10 @@
 //
 //     A_step x = Pi A Pi x + (I - Pi) x,     M_step^{-1} r = Pi T^{-1} M^{-1} T^{-T} Pi r + (I - Pi) r.
 //
-// On the free unknowns the spectrum of M_step^{-1} A_step lies inside that of the unprojected
-// pair (restricting a symmetric pencil to a subspace interlaces its eigenvalues), so fixing
-// pivots never makes the preconditioner worse.
+// On the free unknowns M_step^{-1} inverts a Schur complement of T^T M T, not its restriction:
+// the two differ by a term of rank at most the number of fixed pivots. With few fixed (Hertz)
+// the final solves stay at 55-113 iterations up to 13.6M unknowns; with all fixed (the
+// manufactured scene, bilateral) they grow like h^-0.43 (chapter 9's notes).
 #pragma once
 
 #include <petscksp.h>

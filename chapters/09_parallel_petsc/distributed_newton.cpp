@@ -85,8 +85,8 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   out.pc_type = solver.pc_type();
   const double final_rtol = solver.final_rtol(), loose_rtol = std::max(o.loose_rtol, final_rtol);
 
-  out.active.assign(static_cast<std::size_t>(m), false);
-  bool tight = loose_rtol <= final_rtol, repeat = false;
+  out.active.assign(static_cast<std::size_t>(m), o.bilateral);
+  bool tight = o.bilateral || loose_rtol <= final_rtol, repeat = false;
   for (int solve = 1; solve <= o.max_solves; ++solve) {
     // One Newton step: w_A = 0, one Krylov solve from the last v
     const std::vector<PetscInt> fixed = owned_active(c, out.active, rhs);
@@ -113,6 +113,10 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
     for (int i = 0; i < m; ++i) {
       out.w[i] = c.b[i] * v_s[i];
       if (out.active[i]) out.lambda[i] = residual[i] / c.b[i];
+    }
+    if (o.bilateral) {
+      out.steps = 1;
+      break;
     }
     // chapter 6's rule, lambda_i + c_i w_i > 0 with c_i its A_{s_i s_i} = (this A's) / b_i^2
     std::vector<bool> next(static_cast<std::size_t>(m));

@@ -23,9 +23,10 @@
 namespace chapter09 {
 
 struct NewtonOptions {
-  double ksp_rtol = 1e-12;    // the final solve: ||B residual|| <= rtol ||B rhs||
+  double ksp_rtol = 1e-13;    // the final solve: ||B residual|| <= rtol ||B rhs||
   double loose_rtol = 1e-2;   // a solve while the set moves: rtol times its initial residual
   int max_solves = 50;
+  bool bilateral = false;     // w = 0 at every node: one solve, lambda of either sign
 };
 
 struct NewtonResult {

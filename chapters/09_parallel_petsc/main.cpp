@@ -41,8 +41,9 @@ namespace {
 struct Options : mortar::TwoBodyOptions {
   int n0 = 12, levels = 5;
   double delta = 0.02, R = 1;
-  double ksp_rtol = 1e-12, loose_rtol = 1e-2;
+  double ksp_rtol = 1e-13, loose_rtol = 1e-2;
   std::string reference = "answer";  // answer | limit | none
+  std::string scene = "hertz";       // hertz | manufactured
   bool quick = false, no_plot = false;
   std::string out = "results/ch09_parallel_petsc";
 };
@@ -82,6 +83,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
                     "while the active set still moves, each Krylov solve reduces its own residual by this factor; "
                     "the final solve reaches --ksp-rtol (= --ksp-rtol: an exact Newton method)",
                     mortar::Range::closed(1e-15, 0.1));
+  parser.add_choice("scene", o.scene, {"hertz", "manufactured"},
+                    "chapter 5's Hertz scene (unilateral), or chapter 4's manufactured solution (bilateral)");
   parser.add_choice("reference", o.reference, {"answer", "limit", "none"},
                     "chapter 6's CHOLMOD answer and the physical limit on rank 0; the limit alone; or neither");
   parser.add_string("out", o.out, "output folder (written by rank 0)");
@@ -144,15 +147,21 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     const int n1 = o.n0 << level;
     const mortar::TwoBodies bodies = mortar::make_two_bodies(mortar::two_body_geometry(o, n1, 1.0),
                                                              mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2));
-    const mortar::SceneData scene = mortar::pressed_between_plates(bodies, o.delta);
+    // Hertz: pressed between plates, the gap of a cylinder; manufactured: chapter 4's exact
+    // solution, its body forces and boundary data, glued (every pivot fixed at w = 0)
+    const bool hertz = o.scene == "hertz";
+    const mortar::ManufacturedContact exact(mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2),
+                                            mortar::sloped_profile(o.L), o.L);
+    const mortar::SceneData scene =
+        hertz ? mortar::pressed_between_plates(bodies, o.delta) : mortar::manufactured_scene(bodies, exact);
     if (root && level == 0) chapter09::plot_partition(o.out, bodies, chapter09::ranks(), !o.no_plot);
     const mortar::ContactInterface gamma = mortar::make_dual_interface(bodies, o.nonmortar - 1);
     const mortar::Constraints constraints = mortar::constraint_rows(
         bodies, gamma, mortar::integral_matching_rows(gamma), scene.prescribed_mask(bodies.num_dofs()));
     const double L = o.L, R = o.R;
-    const Eigen::VectorXd G = mortar::tested_gap(gamma, constraints, [L, R](double x) {
+    const Eigen::VectorXd G = hertz ? mortar::tested_gap(gamma, constraints, [L, R](double x) {
       return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R);
-    });
+    }) : Eigen::VectorXd::Zero(constraints.B.rows());
 
     // Steps 2, 4 and 5, timed together: the whole distributed contact solve. Its matrices are
     // freed before chapter 6's answer starts: the two never hold memory at once.
@@ -160,6 +169,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     chapter09::NewtonOptions newton_options;
     newton_options.ksp_rtol = o.ksp_rtol;
     newton_options.loose_rtol = o.loose_rtol;
+    newton_options.bilateral = !hertz;
     double time_s = 0;
     {
       chapter09::DistributedSystem system;
@@ -195,7 +205,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       int identical = 1;
       mortar::reset_peak_memory();
       if (root && o.reference == "answer") {
-        const chapter09::CholmodAnswer a = chapter09::cholmod_answer(bodies, scene, constraints, G);
+        const chapter09::CholmodAnswer a = chapter09::cholmod_answer(bodies, scene, constraints, G, hertz);
         const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(newton.lambda.data(), a.lambda.size());
         difference = std::max(relative_difference(u, a.u), relative_difference(lambda, a.lambda));
         identical = newton.active == a.active;
