@@ -51,7 +51,7 @@ plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'contact s
      'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once'${mumps_time}, \\
      [1e5:2e7] 2e-6 * x title 'slope 1 (O(n))' dt 3 lc rgb 'black'
 unset logscale y
-set yrange [0:*]
+set yrange [0:3000]
 set ylabel 'peak memory [bytes per unknown]'
 set title 'Peak resident memory per unknown'
 set key top right
