@@ -198,6 +198,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
                        {"time_s", time_s}};
     row.push_back({"ksp_iterations_total", std::accumulate(newton.ksp_iterations.begin(), newton.ksp_iterations.end(), 0)});
     row.push_back({"memory_mb", memory_mb});
+    row.push_back({"pc_setup_s", newton.setup_s});  // the preconditioner of K, built once
     if (o.reference != "none") {
       // Step 6: the level's physical limit and, with --reference answer, chapter 6's answer
       // (rank 0), and how far the distributed one is from it.
