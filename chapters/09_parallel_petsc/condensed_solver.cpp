@@ -55,6 +55,8 @@ void CondensedSolver::set_up() {
 }
 
 int CondensedSolver::solve(Vec rhs, Vec v, double rtol, bool from_start) {
+  zero_fixed(rhs);
+  zero_fixed(v);
   // a fresh convergence test each time: relative to ||B rhs||, or to the initial residual
   void* test;
   check(KSPConvergedDefaultCreate(&test), "KSPConvergedDefaultCreate");

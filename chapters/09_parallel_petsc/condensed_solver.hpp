@@ -41,8 +41,9 @@ class CondensedSolver {
   void set_up();
   // The rows fixed at v = 0 from now on: this rank's active pivots.
   void fix(const std::vector<PetscInt>& owned_rows) { fixed_ = owned_rows; }
-  // CG on A_step v = rhs from the given v, to ||B r|| <= rtol ||B rhs||, or with `from_start`
-  // to rtol times the initial residual. Returns the iterations; throws if CG failed.
+  // CG on A_step v = Pi rhs from the given v (both set to 0 on the fixed rows first), to
+  // ||B r|| <= rtol ||B rhs||, or with `from_start` to rtol times the initial residual.
+  // Returns the iterations; throws if CG failed.
   int solve(Vec rhs, Vec v, double rtol, bool from_start);
   // y = A x, nothing fixed.
   void apply_A(Vec x, Vec y);

@@ -55,12 +55,6 @@ std::vector<PetscInt> owned_active(const DistributedCondensation& c, const std::
   return rows;
 }
 
-// Set x to 0 on the given rows (owned ones).
-void zero_rows(Vec x, const std::vector<PetscInt>& rows) {
-  for (PetscInt d : rows) check(VecSetValue(x, d, 0.0, INSERT_VALUES), "VecSetValue");
-  check(VecAssemblyBegin(x), "VecAssemblyBegin");
-  check(VecAssemblyEnd(x), "VecAssemblyEnd");
-}
 }  // namespace
 
 void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
@@ -89,11 +83,8 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   bool tight = o.bilateral || loose_rtol <= final_rtol, repeat = false;
   for (int solve = 1; solve <= o.max_solves; ++solve) {
     // One Newton step: w_A = 0, one Krylov solve from the last v
-    const std::vector<PetscInt> fixed = owned_active(c, out.active, rhs);
-    solver.fix(fixed);
+    solver.fix(owned_active(c, out.active, rhs));
     check(VecCopy(c.r, rhs), "VecCopy");
-    zero_rows(rhs, fixed);
-    zero_rows(v, fixed);
     int iterations = 0;
     try {
       iterations = solver.solve(rhs, v, tight ? final_rtol : loose_rtol, !tight);
