@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "common/fem/mesh.hpp"
 
@@ -139,4 +141,31 @@ TEST(Mesh, rejects_explicit_nodes_that_do_not_span_the_rectangle_or_go_back) {
   EXPECT_THROW(rectangle_mesh(s), std::invalid_argument);
   EXPECT_THROW(graded_nodes(0, 1, [](double) { return 0.0; }), std::invalid_argument);
   EXPECT_THROW(graded_nodes(1, 1, [](double) { return 0.1; }), std::invalid_argument);
+}
+
+// Bands of a jittered, graded mesh, laid side by side, are the whole mesh: the same
+// coordinates (bit for bit), the same triangles shifted by the band's first node, and the
+// rectangle's sides only where a band reaches them.
+TEST(Mesh, bands_rebuild_the_whole_mesh_with_its_jitter) {
+  RectangleSpec s;
+  s.nx = 7; s.ny = 9; s.jitter = 0.3; s.grading = 2; s.seed = 5;
+  const Mesh whole = rectangle_mesh(s);
+  std::size_t triangles = 0;
+  for (const auto& [row0, row1] : std::vector<std::pair<int, int>>{{0, 2}, {2, 3}, {3, 9}}) {
+    const Mesh band = rectangle_band(s, row0, row1);
+    const int shift = row0 * (s.nx + 1);
+    ASSERT_EQ(band.num_nodes(), (row1 - row0 + 1) * (s.nx + 1));
+    for (int k = 0; k < band.num_nodes(); ++k) EXPECT_EQ(band.nodes[k], whole.nodes[k + shift]) << "node " << k;
+    for (std::size_t t = 0; t < band.triangles.size(); ++t)
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(band.triangles[t][a] + shift, whole.triangles[triangles + t][a]);
+    triangles += band.triangles.size();
+    EXPECT_EQ(band.nodes_on(Side::bottom).size(), row0 == 0 ? 8u : 0u);
+    EXPECT_EQ(band.nodes_on(Side::top).size(), row1 == 9 ? 8u : 0u);
+    ASSERT_EQ(band.nodes_on(Side::left).size(), static_cast<std::size_t>(row1 - row0 + 1));
+    EXPECT_EQ(band.nodes_on(Side::left).front() + shift, whole.nodes_on(Side::left)[row0]);
+  }
+  EXPECT_EQ(triangles, whole.triangles.size());
+  EXPECT_EQ(rectangle_band(s, 4, 4).num_nodes(), 0);
+  EXPECT_THROW(rectangle_band(s, 3, 10), std::invalid_argument);
+  EXPECT_THROW(rectangle_band(s, 5, 4), std::invalid_argument);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "petsc_check.hpp"
 
@@ -14,15 +15,25 @@ DistributedCondensation::~DistributedCondensation() {
     if (*v != nullptr) VecDestroy(v);
 }
 
-void condense(DistributedCondensation& c, const DistributedSystem& s, const mortar::Constraints& constraints,
-              const Eigen::VectorXd& G) {
-  using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  const RowMajor B = constraints.B;
-  const PetscInt n = s.rows.size;
+GlobalRows global_rows(const Part& strip, const mortar::Constraints& constraints, PetscInt num_dofs) {
+  GlobalRows out;
+  std::vector<Eigen::Triplet<double, PetscInt>> entries;
+  for (int k = 0; k < constraints.B.outerSize(); ++k)
+    for (mortar::SparseMatrix::InnerIterator it(constraints.B, k); it; ++it)
+      entries.emplace_back(static_cast<PetscInt>(it.row()), strip.global(static_cast<int>(it.col())), it.value());
+  out.B.resize(constraints.B.rows(), num_dofs);
+  out.B.setFromTriplets(entries.begin(), entries.end());
+  for (int d : constraints.pivot_dof) out.pivots.push_back(strip.global(d));
+  return out;
+}
+
+void condense(DistributedCondensation& c, const DistributedSystem& s, const GlobalRows& rows, const Eigen::VectorXd& G) {
+  const auto& B = rows.B;
   const int m = static_cast<int>(B.rows());
-  c.pivots.assign(constraints.pivot_dof.begin(), constraints.pivot_dof.end());
-  std::vector<int> row_of(static_cast<std::size_t>(n), -1);
+  c.pivots = rows.pivots;
+  std::unordered_map<PetscInt, int> row_of;  // pivot dof -> its row
   for (int i = 0; i < m; ++i) row_of[c.pivots[i]] = i;
+  const auto is_pivot = [&](PetscInt d) { return row_of.count(d) > 0; };
   c.b.resize(static_cast<std::size_t>(m));  // every row's, on every rank: all take the same decisions
   for (int i = 0; i < m; ++i) c.b[i] = B.coeff(i, c.pivots[i]);
 
@@ -31,16 +42,16 @@ void condense(DistributedCondensation& c, const DistributedSystem& s, const mort
   check(VecDuplicate(s.f, &c.g), "VecDuplicate");
   check(VecSet(c.g, 0.0), "VecSet");
   for (PetscInt d = s.rows.first; d < s.rows.last; ++d) {
-    const int i = row_of[d];
-    if (i < 0) {
+    if (!is_pivot(d)) {
       check(MatSetValue(c.T, d, d, 1.0, INSERT_VALUES), "MatSetValue (T)");
       continue;
     }
+    const int i = row_of.at(d);
     const double b = c.b[i];
     if (!(std::fabs(b) > 0)) throw std::invalid_argument("condense: row " + std::to_string(i) + " has a zero pivot");
     check(MatSetValue(c.T, d, d, 1.0, INSERT_VALUES), "MatSetValue (T)");
-    for (RowMajor::InnerIterator it(B, i); it; ++it) {
-      if (it.col() == d || row_of[it.col()] >= 0) continue;  // the pivot, or another row's (dual: round-off)
+    for (GlobalRows::Matrix::InnerIterator it(B, i); it; ++it) {
+      if (it.col() == d || is_pivot(it.col())) continue;  // the pivot, or another row's (dual: round-off)
       check(MatSetValue(c.T, d, static_cast<PetscInt>(it.col()), -it.value() / b, INSERT_VALUES), "MatSetValue (T)");
     }
     check(VecSetValue(c.g, d, G[i] / b, INSERT_VALUES), "VecSetValue (g)");

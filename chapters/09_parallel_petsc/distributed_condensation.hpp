@@ -1,7 +1,8 @@
 // Step 4 of chapter 9: chapter 6's condensation on the distributed matrix.
 //
 // The contact line is one-dimensional and small, so every rank builds it whole, as chapter 6
-// does (traces, merged grid, dual basis, the rows of B and the weighted gap G). Then, as in
+// does (traces, merged grid, dual basis, the rows of B and the weighted gap G), on the two cell
+// rows along Gamma_c (RowSplit::contact_strip), and moves B's columns to the global numbering. Then, as in
 // common/contact/dual_condensation.hpp, the weighted gap w_i = (B u - G)_i replaces the
 // non-mortar normal dof s_i of each row:
 //
@@ -32,9 +33,17 @@ struct DistributedCondensation {
   ~DistributedCondensation();
 };
 
-// B and G in the course's global numbering (constraint_rows, tested_gap); B must be diagonal on
-// the pivots (a dual basis), as condense_contact requires.
-void condense(DistributedCondensation& c, const DistributedSystem& s, const mortar::Constraints& constraints,
-              const Eigen::VectorXd& G);
+// The rows of B with global columns (row-major: no storage per column), and each row's pivot.
+struct GlobalRows {
+  using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>;
+  Matrix B;
+  std::vector<PetscInt> pivots;
+};
+// constraint_rows of the contact strip, its columns moved to the global numbering.
+GlobalRows global_rows(const Part& strip, const mortar::Constraints& constraints, PetscInt num_dofs);
+
+// B must be diagonal on the pivots (a dual basis), as condense_contact requires; G the weighted
+// gap (tested_gap).
+void condense(DistributedCondensation& c, const DistributedSystem& s, const GlobalRows& rows, const Eigen::VectorXd& G);
 
 }  // namespace chapter09

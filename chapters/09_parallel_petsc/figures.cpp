@@ -44,9 +44,11 @@ void plot_solves(const std::string& folder, const mortar::ConvergenceTable& tabl
   mortar::write_figure(folder, "time", t, run);
 }
 
-void plot_partition(const std::string& folder, const mortar::TwoBodies& bodies, int ranks, bool run) {
+void plot_partition(const std::string& folder, const RowSplit& split, const mortar::Material& body1,
+                    const mortar::Material& body2, bool run) {
+  const int ranks = static_cast<int>(split.ranks());
   mortar::Figure f;
-  f.title = "Who integrates which triangle: " + std::to_string(ranks) + " ranks, rows split by node";
+  f.title = "Who integrates which triangle: " + std::to_string(ranks) + " ranks, rows split by cell rows";
   f.xlabel = "x [m]";
   f.ylabel = "y [m]";
   f.equal_axes = true;
@@ -54,15 +56,15 @@ void plot_partition(const std::string& folder, const mortar::TwoBodies& bodies, 
   f.width = 760;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int r = 0; r < ranks; ++r) {
-    const Ownership rows = split_by_nodes(bodies.num_dofs(), r, ranks);
+    const Ownership rows = split.ownership(r);
     char title[96];
     std::snprintf(title, sizeof title, "rank %d: rows %d-%d", r, static_cast<int>(rows.first),
                   static_cast<int>(rows.last - 1));
     mortar::Series s{title, {}, {}, "lines", "lw 1.5"};
+    const Part part = split.part(r, body1, body2);  // each rank's own band, as it builds it
     for (int l = 0; l < 2; ++l) {
-      const mortar::Mesh& mesh = bodies.body(l).mesh;
+      const mortar::Mesh& mesh = part.bodies.body(l).mesh;
       for (const auto& t : mesh.triangles) {
-        if (!rows.owns(bodies.dof(l, t[0], 0))) continue;
         for (int k = 0; k <= 3; ++k) {
           s.x.push_back(mesh.nodes[t[k % 3]].x());
           s.y.push_back(mesh.nodes[t[k % 3]].y());

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "common/contact/two_bodies.hpp"
 #include "common/study/convergence_study.hpp"
+#include "rank_part.hpp"
 
 namespace chapter09 {
 
@@ -14,8 +14,9 @@ namespace chapter09 {
 void plot_solves(const std::string& folder, const mortar::ConvergenceTable& table, const std::string& solver,
                  double rtol, bool run);
 
-// partition.png: the triangles of both bodies, coloured by the rank that integrates them (the
-// owner of their first vertex), as split_by_nodes splits them over `ranks` ranks.
-void plot_partition(const std::string& folder, const mortar::TwoBodies& bodies, int ranks, bool run);
+// partition.png: the triangles of both bodies, coloured by the rank that integrates them: each
+// rank's band of cell rows (rank_part.hpp).
+void plot_partition(const std::string& folder, const RowSplit& split, const mortar::Material& body1,
+                    const mortar::Material& body2, bool run);
 
 }  // namespace chapter09

@@ -7,8 +7,10 @@
 //
 // The steps, in lecture order:
 //   1. the command line, split between the course and PETSc (petsc_options.cpp);
-//   2. the bodies' stiffness assembled where its rows live (distributed_system.cpp);
-//   3. the contact line, whole on every rank: chapter 6's dual basis and the rows of B;
+//   2. each rank's band of cell rows, built alone (rank_part.cpp), and its stiffness assembled
+//      where its rows live (distributed_system.cpp);
+//   3. the contact line, whole on every rank from the cells along Gamma_c: chapter 6's dual
+//      basis, the rows of B and the weighted gap;
 //   4. the condensation A = T^T K T on the distributed matrix (distributed_condensation.cpp);
 //   5. the semismooth Newton method, one Krylov solve per step (distributed_newton.cpp);
 //   6. chapter 6's CHOLMOD answer on rank 0, and the differences (cholmod_reference.cpp);
@@ -122,6 +124,24 @@ Eigen::VectorXd gather_on_rank_0(Vec u) {
   return out;
 }
 
+// Step 3: the rows of B (chapter 6's dual basis, integral matching) and the weighted gap G of
+// the Hertz scene (zero for the glued manufactured one), on any two bodies that hold Gamma_c.
+struct ContactLine {
+  mortar::Constraints constraints;
+  Eigen::VectorXd G;
+};
+ContactLine contact_line(const mortar::TwoBodies& bodies, const mortar::SceneData& scene, const Options& o) {
+  const mortar::ContactInterface gamma = mortar::make_dual_interface(bodies, o.nonmortar - 1);
+  ContactLine line;
+  line.constraints = mortar::constraint_rows(bodies, gamma, mortar::integral_matching_rows(gamma),
+                                             scene.prescribed_mask(bodies.num_dofs()));
+  const double L = o.L, R = o.R;
+  line.G = o.scene == "hertz" ? mortar::tested_gap(gamma, line.constraints, [L, R](double x) {
+    return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R);
+  }) : Eigen::VectorXd::Zero(line.constraints.B.rows());
+  return line;
+}
+
 // The slowest rank's time for f.
 template <class F>
 double timed(F&& f) {
@@ -141,27 +161,24 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   int ksp_max = 0, newton_last = 0;
   double ratio_last = std::nan(""), limit_last = std::nan("");
   std::string solver;
+  const bool hertz = o.scene == "hertz";
+  const mortar::Material material1(o.E1, o.nu1), material2(o.E2, o.nu2);
+  // Hertz: pressed between plates, the gap of a cylinder; manufactured: chapter 4's exact
+  // solution, its body forces and boundary data, glued (every pivot fixed at w = 0)
+  const mortar::ManufacturedContact exact(material1, material2, mortar::sloped_profile(o.L), o.L);
+  const auto scene_of = [&](const mortar::TwoBodies& bodies) {
+    return hertz ? mortar::pressed_between_plates(bodies, o.delta) : mortar::manufactured_scene(bodies, exact);
+  };
   for (int level = 0; level < o.levels; ++level) {
     mortar::reset_peak_memory();
-    // The level, whole on every rank: meshes, loads, and the contact line (step 3).
-    const int n1 = o.n0 << level;
-    const mortar::TwoBodies bodies = mortar::make_two_bodies(mortar::two_body_geometry(o, n1, 1.0),
-                                                             mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2));
-    // Hertz: pressed between plates, the gap of a cylinder; manufactured: chapter 4's exact
-    // solution, its body forces and boundary data, glued (every pivot fixed at w = 0)
-    const bool hertz = o.scene == "hertz";
-    const mortar::ManufacturedContact exact(mortar::Material(o.E1, o.nu1), mortar::Material(o.E2, o.nu2),
-                                            mortar::sloped_profile(o.L), o.L);
-    const mortar::SceneData scene =
-        hertz ? mortar::pressed_between_plates(bodies, o.delta) : mortar::manufactured_scene(bodies, exact);
-    if (root && level == 0) chapter09::plot_partition(o.out, bodies, chapter09::ranks(), !o.no_plot);
-    const mortar::ContactInterface gamma = mortar::make_dual_interface(bodies, o.nonmortar - 1);
-    const mortar::Constraints constraints = mortar::constraint_rows(
-        bodies, gamma, mortar::integral_matching_rows(gamma), scene.prescribed_mask(bodies.num_dofs()));
-    const double L = o.L, R = o.R;
-    const Eigen::VectorXd G = hertz ? mortar::tested_gap(gamma, constraints, [L, R](double x) {
-      return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R);
-    }) : Eigen::VectorXd::Zero(constraints.B.rows());
+    // The level: who owns which cell rows, this rank's band of them, and the contact line on
+    // every rank (steps 2 and 3).
+    const mortar::TwoBodyGeometry geometry = mortar::two_body_geometry(o, o.n0 << level, 1.0);
+    const chapter09::RowSplit split(geometry, chapter09::ranks());
+    if (root && level == 0) chapter09::plot_partition(o.out, split, material1, material2, !o.no_plot);
+    const chapter09::Part strip = split.contact_strip(material1, material2);
+    const ContactLine line = contact_line(strip.bodies, scene_of(strip.bodies), o);
+    double h = 0;
 
     // Steps 2, 4 and 5, timed together: the whole distributed contact solve. Its matrices are
     // freed before chapter 6's answer starts: the two never hold memory at once.
@@ -172,11 +189,16 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     newton_options.bilateral = !hertz;
     double time_s = 0;
     {
+      const chapter09::Part part = split.part(chapter09::rank(), material1, material2);
+      const mortar::SceneData scene = scene_of(part.bodies);
+      const double own_h = part.bodies.max_edge_length();
+      MPI_Allreduce(&own_h, &h, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
       chapter09::DistributedSystem system;
       chapter09::DistributedCondensation condensed;
       time_s = timed([&] {
-        chapter09::assemble(system, bodies, scene);
-        chapter09::condense(condensed, system, constraints, G);
+        chapter09::assemble(system, split.ownership(chapter09::rank()), part, scene);
+        chapter09::condense(condensed, system, chapter09::global_rows(strip, line.constraints, split.num_dofs()),
+                            line.G);
         chapter09::solve_contact(newton, system, condensed, newton_options);
       });
     }
@@ -189,8 +211,9 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     newton_last = newton.steps;
     solver = newton.ksp_type + " + " + newton.pc_type;
 
-    mortar::Row row = {{"h", bodies.max_edge_length()},
-                       {"dofs", bodies.num_dofs()},
+    const int dofs = static_cast<int>(split.num_dofs());
+    mortar::Row row = {{"h", h},
+                       {"dofs", dofs},
                        {"multipliers", static_cast<double>(newton.lambda.size())},
                        {"ranks", chapter09::ranks()},
                        {"newton_steps", newton.steps},
@@ -205,15 +228,23 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       double difference = 0, limit_s = 0, cholmod_s = 0;
       int identical = 1;
       mortar::reset_peak_memory();
-      if (root && o.reference == "answer") {
-        const chapter09::CholmodAnswer a = chapter09::cholmod_answer(bodies, scene, constraints, G, hertz);
-        const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(newton.lambda.data(), a.lambda.size());
-        difference = std::max(relative_difference(u, a.u), relative_difference(lambda, a.lambda));
-        identical = newton.active == a.active;
-        limit_s = a.limit_s;
-        cholmod_s = a.time_s;
-      } else if (root) {
-        limit_s = chapter09::physical_limit(bodies, scene);
+      if (root) {
+        // rank 0 builds the whole level for it, and its own contact line: an independent check
+        // of the bands and the strip
+        const mortar::TwoBodies bodies = mortar::make_two_bodies(geometry, material1, material2);
+        const mortar::SceneData scene = scene_of(bodies);
+        if (o.reference == "answer") {
+          const ContactLine whole = contact_line(bodies, scene, o);
+          const chapter09::CholmodAnswer a =
+              chapter09::cholmod_answer(bodies, scene, whole.constraints, whole.G, hertz);
+          const Eigen::VectorXd lambda = Eigen::Map<const Eigen::VectorXd>(newton.lambda.data(), a.lambda.size());
+          difference = std::max(relative_difference(u, a.u), relative_difference(lambda, a.lambda));
+          identical = newton.active == a.active;
+          limit_s = a.limit_s;
+          cholmod_s = a.time_s;
+        } else {
+          limit_s = chapter09::physical_limit(bodies, scene);
+        }
       }
       // rank 0's peak through chapter 6's answer or the limit (CHOLMOD's factor)
       double cholmod_mb = mortar::peak_memory_bytes() / 1e6;
@@ -238,7 +269,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     table.add(row);
     if (root) {
       std::printf("level %d: %d dofs, %d ranks, %d Newton steps, Krylov iterations per solve (' while the active set moves):", level,
-                  bodies.num_dofs(), chapter09::ranks(), newton.steps);
+                  dofs, chapter09::ranks(), newton.steps);
       for (std::size_t k = 0; k < newton.ksp_iterations.size(); ++k)
         std::printf(" %d%s", newton.ksp_iterations[k], newton.tight[k] ? "" : "'");
       std::printf(" (%s + %s), %.3g s, %.0f MB", newton.ksp_type.c_str(), newton.pc_type.c_str(), time_s,

@@ -56,7 +56,8 @@ std::string unused_petsc_options() {
   // build levels below the finest (its -mg_levels_ options are read only then): the 1D
   // Laplacian (-1, 2, -1) with 400 rows per rank. Every -ksp_, -pc_ and -mg_ option that
   // applies is read; the trial's own output (a -ksp_monitor) is not shown.
-  const Ownership rows = split_by_nodes(400 * static_cast<PetscInt>(ranks()));
+  const PetscInt per_rank = 400;
+  const Ownership rows{per_rank * rank(), per_rank * (rank() + 1), per_rank * ranks()};
   Mat M = create_matrix(rows, 3);
   for (PetscInt d = rows.first; d < rows.last; ++d) {
     check(MatSetValue(M, d, d, 2.0, INSERT_VALUES), "MatSetValue");

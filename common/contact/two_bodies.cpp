@@ -29,20 +29,20 @@ double TwoBodies::max_edge_length() const {
   return std::max(bodies_[0].mesh.max_edge_length(), bodies_[1].mesh.max_edge_length());
 }
 
+RectangleSpec body_rectangle(const TwoBodyGeometry& g, int l) {
+  RectangleSpec s;
+  s.x1 = g.L;
+  s.y0 = l == 0 ? 0 : -g.H2;
+  s.y1 = l == 0 ? g.H1 : 0;
+  s.nx = l == 0 ? g.n1 : g.n2;
+  s.ny = l == 0 ? g.m1 : g.m2;
+  s.jitter = g.jitter;
+  s.seed = l == 0 ? 1 : 2;  // independent jitter: the traces on Gamma_c differ
+  return s;
+}
+
 TwoBodies make_two_bodies(const TwoBodyGeometry& g, const Material& body1, const Material& body2) {
-  RectangleSpec upper, lower;
-  upper.x1 = lower.x1 = g.L;
-  upper.y0 = 0;
-  upper.y1 = g.H1;
-  upper.nx = g.n1;
-  upper.ny = g.m1;
-  lower.y0 = -g.H2;
-  lower.y1 = 0;
-  lower.nx = g.n2;
-  lower.ny = g.m2;
-  upper.jitter = lower.jitter = g.jitter;
-  upper.seed = 1;
-  lower.seed = 2;  // independent jitter: the traces on Gamma_c differ
+  const RectangleSpec upper = body_rectangle(g, 0), lower = body_rectangle(g, 1);
   if (g.degree == 2) return TwoBodies({p2_mesh(rectangle_mesh(upper)), body1}, {p2_mesh(rectangle_mesh(lower)), body2});
   if (g.degree != 1) throw std::invalid_argument("make_two_bodies: degree 1 or 2, got " + std::to_string(g.degree));
   return TwoBodies({rectangle_mesh(upper), body1}, {rectangle_mesh(lower), body2});

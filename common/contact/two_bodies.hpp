@@ -46,6 +46,9 @@ class TwoBodies {
   std::array<Body, 2> bodies_;
 };
 
+// The rectangle of body l (0 upper, 1 lower) as rectangle_mesh takes it: its P1 mesh, or a band
+// of its cell rows (rectangle_band).
+RectangleSpec body_rectangle(const TwoBodyGeometry& g, int l);
 TwoBodies make_two_bodies(const TwoBodyGeometry& g, const Material& body1, const Material& body2);
 
 }  // namespace mortar

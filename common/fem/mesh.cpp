@@ -95,15 +95,29 @@ double local_spacing(const std::vector<double>& t, int k) {
 
 Mesh rectangle_mesh(const RectangleSpec& s) {
   check_spec(s);
-  Mesh mesh;
+  return rectangle_band(s, 0, static_cast<int>(rows(s).size()) - 1);
+}
+
+Mesh rectangle_band(const RectangleSpec& s, int row0, int row1) {
+  check_spec(s);
   const std::vector<double> xs = columns(s), ys = rows(s);
   const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
-  auto id = [nx](int i, int j) { return j * (nx + 1) + i; };
+  if (row0 < 0 || row1 < row0 || row1 > ny)
+    throw std::invalid_argument("rectangle_band: cell rows [" + std::to_string(row0) + ", " + std::to_string(row1) +
+                                ") outside [0, " + std::to_string(ny) + ")");
+  Mesh mesh;
+  if (row0 == row1) return mesh;
+  // band node (i, j - row0) is the whole mesh's node (i, j): ids shifted by row0 (nx + 1)
+  auto id = [nx, row0](int i, int j) { return (j - row0) * (nx + 1) + i; };
 
+  // The jitter of node (i, j) is the (j (nx + 1) + i)-th pair of draws of one sequence: the
+  // earlier rows' draws are made and dropped, so a band has the whole mesh's coordinates.
   std::mt19937 rng(s.seed);
   std::uniform_real_distribution<double> shift(-0.5 * s.jitter, 0.5 * s.jitter);
-  mesh.nodes.resize(static_cast<size_t>((nx + 1) * (ny + 1)));
-  for (int j = 0; j <= ny; ++j)
+  if (s.jitter > 0)
+    for (long k = 0; k < 2L * row0 * (nx + 1); ++k) shift(rng);
+  mesh.nodes.resize(static_cast<size_t>((nx + 1) * (row1 - row0 + 1)));
+  for (int j = row0; j <= row1; ++j)
     for (int i = 0; i <= nx; ++i) {
       double x = xs[i], y = ys[j];
       const bool x_inside = i > 0 && i < nx, y_inside = j > 0 && j < ny;
@@ -115,18 +129,19 @@ Mesh rectangle_mesh(const RectangleSpec& s) {
       mesh.nodes[id(i, j)] = Eigen::Vector2d(x, y);
     }
 
-  mesh.triangles.reserve(static_cast<size_t>(2 * nx * ny));
-  for (int j = 0; j < ny; ++j)
+  mesh.triangles.reserve(static_cast<size_t>(2 * nx * (row1 - row0)));
+  for (int j = row0; j < row1; ++j)
     for (int i = 0; i < nx; ++i) {
       mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
 
+  // the rectangle's sides: bottom and top only where the band reaches them
   for (int i = 0; i <= nx; ++i) {
-    mesh.side_nodes[static_cast<int>(Side::bottom)].push_back(id(i, 0));
-    mesh.side_nodes[static_cast<int>(Side::top)].push_back(id(i, ny));
+    if (row0 == 0) mesh.side_nodes[static_cast<int>(Side::bottom)].push_back(id(i, 0));
+    if (row1 == ny) mesh.side_nodes[static_cast<int>(Side::top)].push_back(id(i, ny));
   }
-  for (int j = 0; j <= ny; ++j) {
+  for (int j = row0; j <= row1; ++j) {
     mesh.side_nodes[static_cast<int>(Side::left)].push_back(id(0, j));
     mesh.side_nodes[static_cast<int>(Side::right)].push_back(id(nx, j));
   }

@@ -54,6 +54,13 @@ struct Mesh {
 
 Mesh rectangle_mesh(const RectangleSpec& spec);
 
+// The cell rows [row0, row1) of rectangle_mesh(spec) (node rows row0 to row1), with the whole
+// mesh's coordinates, jitter included: band node k is the whole mesh's node k + row0 (nx + 1).
+// Its bottom and top sides are listed only where the band reaches the rectangle's, its left and
+// right sides are the band's part of them. Empty when row0 = row1. One rank's part of a mesh
+// (chapter 9) is built this way without the rest.
+Mesh rectangle_band(const RectangleSpec& spec, int row0, int row1);
+
 // Nodes x0 = t_0 < ... < t_N = x1 whose cells follow a target size: every cell holds the same
 // share of int dx / cell_size(x), rounded up to a whole number of cells, so a cell is about
 // as long as cell_size where it lies and never much longer. A size that grows linearly with
