@@ -2,6 +2,8 @@
 # Set-up and entry point of the course on Debian 12 (as root, so missing packages install).
 #
 #   bash course.sh run    install what is missing, build the programs, run every chapter, refresh figures/
+#   bash course.sh run 6  the same for one chapter (6, 06, ch06, ch06_dual_mortar or dual_mortar):
+#                         builds its program alone, refreshes figures/ch06_dual_mortar/ only
 #   bash course.sh test   install what is missing, build, run the test suite
 #   bash course.sh book   install what is missing, write the course book to book/course.html and book/course.pdf
 #
@@ -128,24 +130,62 @@ run_course() {
   # command then finds the library and the programs already built.
   step "configuring build/" configure build
   step "building the programs" cmake --build build -j "$jobs" --target "${chapters[@]}"
+  local program
   for program in "${chapters[@]}"; do
-    rm -rf "figures/${program:?}"
-    step "running chapter ${program:3:1} ($program)" run_program "$program" "results/$program" "figures/$program"
-  done
-  for run in "${extra_runs[@]}"; do
-    IFS='|' read -r program name options label <<< "$run"
-    # shellcheck disable=SC2086
-    step "running $label" run_program "$program" "results/${program}_$name" "figures/$program/$name" $options
+    run_chapter "$program"
   done
   if petsc_found; then
     step "building chapter 9" cmake --build build -j "$jobs" --target ch09_parallel_petsc
-    rm -rf figures/ch09_parallel_petsc
-    step "running chapter 9 (ch09_parallel_petsc) on 2 ranks" \
-      env_launcher "mpirun -n 2" run_program ch09_parallel_petsc results/ch09_parallel_petsc figures/ch09_parallel_petsc
+    run_chapter ch09_parallel_petsc
   else
     echo "PETSc not found: chapter 9 is not built (apt-get install ${petsc_packages[*]})"
   fi
   echo "figures refreshed in figures/, full output in results/, logs in $logs/"
+}
+
+# One chapter: build its program alone, run it and its further scenes, refresh its figures.
+run_one_chapter() {
+  local program=$1
+  step "configuring build/" configure build
+  if [ "$program" = ch09_parallel_petsc ] && ! petsc_found; then
+    echo "course.sh: PETSc not found: chapter 9 cannot be built (apt-get install ${petsc_packages[*]})" >&2
+    exit 1
+  fi
+  step "building $program" cmake --build build -j "$jobs" --target "$program"
+  run_chapter "$program"
+  echo "figures refreshed in figures/$program/, full output in results/, logs in $logs/"
+}
+
+# run_chapter PROGRAM: its default run and its further scenes (extra_runs); figures/PROGRAM is
+# rewritten from them and nothing else is.
+run_chapter() {
+  local program=$1 run name_program name options label
+  rm -rf "figures/${program:?}"
+  if [ "$program" = ch09_parallel_petsc ]; then
+    step "running chapter 9 (ch09_parallel_petsc) on 2 ranks" \
+      env_launcher "mpirun -n 2" run_program ch09_parallel_petsc results/ch09_parallel_petsc figures/ch09_parallel_petsc
+    return 0
+  fi
+  step "running chapter ${program:3:1} ($program)" run_program "$program" "results/$program" "figures/$program"
+  for run in "${extra_runs[@]}"; do
+    IFS='|' read -r name_program name options label <<< "$run"
+    [ "$name_program" = "$program" ] || continue
+    # shellcheck disable=SC2086
+    step "running $label" run_program "$program" "results/${program}_$name" "figures/$program/$name" $options
+  done
+}
+
+# chapter_program WORD: the program of a chapter named by number (6, 06), short name (ch06),
+# program (ch06_dual_mortar) or topic (dual_mortar).
+chapter_program() {
+  local want=$1 program
+  for program in "${chapters[@]}" ch09_parallel_petsc; do
+    local number=${program:2:2}
+    case "$want" in
+      "$program" | "ch$number" | "$number" | "${number#0}" | "${program:5}") echo "$program"; return 0 ;;
+    esac
+  done
+  return 1
 }
 
 # env_launcher LAUNCHER COMMAND...: COMMAND with $launcher set
@@ -205,9 +245,21 @@ make_book() {
 }
 
 case "${1:-}" in
-  run) install_missing "${packages[@]}" "${petsc_packages[@]}"; run_course ;;
+  run)
+    if [ $# -ge 2 ]; then
+      program=$(chapter_program "$2") || {
+        echo "course.sh: no chapter '$2' (a number 1-9, ch06, ch06_dual_mortar or dual_mortar)" >&2
+        exit 2
+      }
+      install_missing "${packages[@]}" "${petsc_packages[@]}"
+      run_one_chapter "$program"
+    else
+      install_missing "${packages[@]}" "${petsc_packages[@]}"
+      run_course
+    fi
+    ;;
   test) install_missing "${packages[@]}" "${petsc_packages[@]}" "${book_packages[@]}" git; run_tests ;;
   book) install_missing "${book_packages[@]}"; make_book ;;
-  *) echo "usage: bash course.sh run|test|book" >&2; exit 2 ;;
+  *) echo "usage: bash course.sh run [CHAPTER] | test | book" >&2; exit 2 ;;
 esac
 print_times

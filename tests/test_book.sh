@@ -2,7 +2,8 @@
 # The course book builds (book/build.sh) into OUT_DIR and holds the whole course: every
 # chapter's title, every figure under figures/ (embedded, named in its data-file attribute),
 # no formula left as TeX, no figure a note shows that figures/ lacks, no link that leaves the
-# book or misses its anchor, and at least MIN_PAGES pages of PDF. Status 77 (ctest: skipped)
+# book or misses its anchor, no heading printed as text ("## ..."), and at least MIN_PAGES pages
+# of PDF. Status 77 (ctest: skipped)
 # when pandoc, XeLaTeX or pdfinfo is missing.
 #
 #   test_book.sh SOURCE_DIR OUT_DIR MIN_PAGES
@@ -60,6 +61,13 @@ done < <(grep -oE 'href="#[^"]*"' "$html" | sed 's/^href="#//; s/"$//' | sort -u
 if grep -qE 'href="[^"#][^":]*"' "$html"; then
   grep -oE 'href="[^"#][^":]*"' "$html" | sort -u
   fail "links to files, which the book does not carry"
+fi
+# a heading that pandoc did not see (no blank line before it) is printed as text, "## ..."
+# inside a paragraph or a list item, and drops out of the contents
+stray=$(awk '/<pre/ {code = 1} !code && /(^|>)[[:space:]]*#+ [^ ]/ {print FNR ": " $0} /<\/pre>/ {code = 0}' "$html")
+if [ -n "$stray" ]; then
+  printf '%s\n' "$stray" | head -5
+  fail "a heading printed as text (\"## ...\") in the HTML: a blank line is missing before it in the notes"
 fi
 pages=$(pdfinfo "$pdf" | sed -n 's/^Pages: *//p')
 echo "course.pdf: $pages pages, course.html: $(du -k "$html" | cut -f1) kB"

@@ -16,7 +16,7 @@
 #include "common/fem/quadrature.hpp"
 #include "common/interface/mortar_matrices.hpp"
 #include "common/interface/multiplier_space.hpp"
-#include "common/interface/pressure_norms.hpp"
+#include "common/contact/pressure_norms.hpp"
 
 using namespace mortar;
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "common/study/convergence_study.hpp"
-#include "common/interface/pressure_norms.hpp"
+#include "common/contact/pressure_norms.hpp"
 #include "common/fem/quadrature.hpp"
 
 using namespace mortar;

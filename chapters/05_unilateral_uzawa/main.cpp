@@ -14,6 +14,7 @@
 #include <exception>
 #include <memory>
 
+#include "common/study/active_sets.hpp"
 #include "common/contact/exact_contact_check.hpp"
 #include "common/contact/manufactured_contact.hpp"
 #include "common/study/contact_plots.hpp"
@@ -118,6 +119,11 @@ int main(int argc, char** argv) {
                   mortar::signorini_contact_point(o.L), chapter05::computed_contact_point(f),
                   chapter05::contact_point_error(f, o.L), f.h1);
     std::printf("time %.3f s, %.2f x the physical limit (%.3f s)\n", f.time_s, f.time_s / f.limit_s, f.limit_s);
+    // the finest level's active set, step by step (the active-set and Newton solvers; Uzawa has none)
+    mortar::ActiveSetHistory active_sets{o.solver + ", " + mortar::matching_name(matching) + " matching", {},
+                                         f.solution.active_history};
+    for (int node : f.constraints.row_node) active_sets.x.push_back(f.gamma.nonmortar_trace.x[node]);
+    if (!active_sets.steps.empty()) mortar::print_active_sets(active_sets);
 
     // 5. Every solver on both matchings, level by level: iterations, time, error.
     std::vector<chapter05::SolverRun> runs;
@@ -135,6 +141,12 @@ int main(int argc, char** argv) {
     if (shown.empty()) shown.push_back(finest.get());
     chapter05::plot_pressures(o.out, o, ref, exact, shown, run);
     chapter05::plot_contact_state(o.out, f, run);
+    if (!active_sets.steps.empty()) {
+      char title[160];
+      std::snprintf(title, sizeof title, "scene %s, finest level (%d dofs, h_2/h_1 = %.3g): the active set, step by step",
+                    o.scene.c_str(), f.bodies.num_dofs(), o.h_ratio);
+      mortar::write_active_sets(o.out, title, {active_sets}, run);
+    }
     if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, table, *ref.hertz, run);
     else chapter05::plot_errors(o.out, table, run);
     if (o.scene == "signorini" || o.scene == "hertz-exact")

@@ -8,7 +8,7 @@
 
 #include "common/contact/manufactured_contact.hpp"
 #include "common/linalg/memory_estimate.hpp"
-#include "common/interface/pressure_norms.hpp"
+#include "common/contact/pressure_norms.hpp"
 
 #include "hertz_reference.hpp"
 #include "peak_pressure.hpp"
@@ -252,7 +252,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     const auto p = [&](double x) { return exact.pressure(x); };
     const auto jump = [&](double x) { return exact.normal_jump(x); };
     const auto u1_y = [&](double x) { return exact.u(0, {x, 0.0}).y(); };
-    // the multiplier in its own norms (common/interface/pressure_norms.hpp): L2, the mesh-dependent
+    // the multiplier in its own norms (common/contact/pressure_norms.hpp): L2, the mesh-dependent
     // H^{-1/2} norm, and the L2 best approximation in M_h^1 beside them
     const mortar::PressureErrors pe = mortar::pressure_errors(r.gamma, r.pressure, p);
     row.push_back({"err_energy", norms.relative_energy()});

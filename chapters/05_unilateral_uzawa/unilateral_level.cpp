@@ -88,6 +88,7 @@ UnilateralLevel solve_unilateral_level(mortar::TwoBodies bodies, const Unilatera
       r.solution.iterations = x.iterations;
       r.solution.residual = x.residual;
       r.solution.active_set_changes = x.active_set_changes;
+      r.solution.active_history = x.active_history;
     } else {
       mortar::ContactProblem problem{{}, std::move(reduced.f), {}, std::move(reduced.G)};
       problem.K.swap(reduced.K);

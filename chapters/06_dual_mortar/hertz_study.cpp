@@ -83,6 +83,7 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
       lambda = x.lambda;
       r.iterations = x.iterations;
       r.active_sizes = x.active_sizes;
+      r.active_sets.steps = x.active_history;
       r.residual = x.residual;
     } else {
       // 5. Standard: chapter 5's primal-dual active set on the multipliers, through S.
@@ -93,6 +94,7 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
       lambda = x.lambda;
       r.iterations = x.iterations;
       r.residual = x.residual;
+      r.active_sets.steps = x.active_history;
     }
   };
   // The finest level is timed with repetitions (physical_limit.hpp); the others once each, as
@@ -104,6 +106,8 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
   // 6. What the multipliers say: the coefficients at their nodes, the function they make, the
   //    total force int lambda_h = sum_i lambda_i int psi_i (the same int psi_i for both bases).
   r.multipliers = static_cast<int>(lambda.size());
+  r.active_sets.label = basis == Basis::dual ? "dual basis, semismooth Newton" : "standard basis, active set on S";
+  for (int node : constraints.row_node) r.active_sets.x.push_back(gamma.nonmortar_trace.x[node]);
   r.h1 = gamma.nonmortar_trace.max_element_length();
   r.pressure = mortar::contact_pressure(gamma, constraints, lambda);
   r.total_force = mortar::total_contact_force(gamma, constraints, lambda);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/study/active_sets.hpp"
 #include "common/contact/contact_fields.hpp"
 #include "common/interface/dual_basis.hpp"
 #include "common/linalg/physical_limit.hpp"
@@ -37,6 +38,7 @@ struct HertzLevel {
   double total_force = 0, max_pressure = 0, half_width = 0;
   int iterations = 0;      // standard: active-set steps on S; dual: Newton steps (one factorization each)
   std::vector<int> active_sizes;  // dual: |A| before each Newton step
+  mortar::ActiveSetHistory active_sets;  // both: the active rows of each step, at their nodes' x
   double residual = 0;     // complementarity residual
   double min_function = 0; // min of sum_i lambda_i psi_i on Gamma_c (negative: the dual basis)
   mortar::TimedLevel timing;

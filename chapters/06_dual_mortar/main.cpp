@@ -111,12 +111,17 @@ int main(int argc, char** argv) {
                   "the limit\n",
                   s.dofs, s.total_force, d.total_force, std::fabs(d.total_force - s.total_force) / s.total_force,
                   s.iterations, d.iterations, s.timing.ratio(), d.timing.ratio());
+      mortar::print_active_sets(s.active_sets);
+      mortar::print_active_sets(d.active_sets);
     }
     mortar::write_bilateral_outputs(o, parser, dual, extra);
     const auto rates = dual.rates();
     std::printf("dual basis: rates (three finest levels): energy %.3f (Theorem 4.2 with M_h dual: 1), L2 %.3f, "
                 "pressure L2 %.3f, H^{-1/2}_h %.3f\n",
                 rates.at("err_energy"), rates.at("err_l2"), rates.at("err_pressure"), rates.at("err_pressure_hminus"));
+    dual.table.local_rates().write_csv(o.out + "/local_rates.csv", true);
+    std::printf("dual basis, ");
+    dual.table.print_local_rates();
     std::printf("D off its diagonal: max |D_ij| / D_ii = %.2e; patch test max |sigma_22 + p| / p = %.2e\n", offdiagonal,
                 dual.patch_integral.rel_error);
     std::printf("finest level: %d dofs, %.3f s, %.2f x the physical limit (%.3f s)\n", finest.bodies.num_dofs(),
@@ -138,6 +143,9 @@ int main(int argc, char** argv) {
       standard = std::make_unique<mortar::BilateralStudy>(
           mortar::run_bilateral_study(o, exact, {mortar::Matching::integral, mortar::solve_bilateral, {}}));
       standard->table.write_csv(o.out + "/standard.csv");
+      standard->table.local_rates().write_csv(o.out + "/standard_local_rates.csv", true);
+      std::printf("standard basis, ");
+      standard->table.print_local_rates();
       print_comparison(dual.table, standard->table);
     }
 
@@ -151,7 +159,14 @@ int main(int argc, char** argv) {
     mortar::plot_pressure(o.out, finest, exact, "dual multipliers: the coefficients lambda_i at their nodes, finest mesh", run);
     mortar::plot_jump(o.out, finest, "dual multipliers: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run);
-    if (hertz_study) chapter06::plot_hertz_pressure(o.out, *hertz_study, run);
+    if (hertz_study) {
+      chapter06::plot_hertz_pressure(o.out, *hertz_study, run);
+      const chapter06::HertzLevel &s = hertz_study->standard.back(), &d = hertz_study->dual.back();
+      char title[160];
+      std::snprintf(title, sizeof title, "Hertz, finest level (%d dofs, h_2/h_1 = %.3g): the active set, step by step",
+                    d.dofs, o.h_ratio);
+      mortar::write_active_sets(o.out, title, {s.active_sets, d.active_sets}, run);
+    }
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch06_dual_mortar: error: %s\n", e.what());

@@ -68,7 +68,6 @@ int main(int argc, char** argv) {
 
     // 3. P2 levels, each solved by the steps of level.cpp, then the patch test (h2/h1 = 3/7).
     const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, {matching, chapter07::solve_quadratic, {}});
-    std::printf("local rates (level to level):\n");
     study.table.print_local_rates();
 
     // 4. P1 on the same scene with the same unknowns.

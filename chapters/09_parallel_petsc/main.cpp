@@ -52,7 +52,7 @@ struct Options : mortar::TwoBodyOptions {
 
 // The memory of the finest level, all ranks together (they share this machine's memory when
 // run here): the distributed solve, measured at 1.4 kB per unknown over two ranks at 1.7M and
-// 3.4M unknowns (K, T, GAMG's hierarchy, the Krylov vectors and each rank's whole mesh),
+// 3.4M unknowns (K, T, GAMG's hierarchy, the Krylov vectors and each rank's band of the mesh),
 // counted at 1.6 kB; then, its matrices freed, chapter 6's CHOLMOD answer or the limit on rank
 // 0. The two never hold memory at once: each must fit on its own.
 void check_memory(const mortar::OptionParser& parser, const Options& o) {

@@ -390,6 +390,7 @@ ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_no
     lambda = solve_on(S, active);
     const Eigen::VectorXd gap = S.apply(lambda) - S.b();
     sol.iterations = k;
+    sol.active_history.push_back(active);
     sol.residual = complementarity_residual(lambda, gap, sc.d, sc.lambda);
     std::vector<int> next;
     for (int i = 0; i < m; ++i)
@@ -411,6 +412,7 @@ ContactSolution pdas(DualOperator& S, const ContactSolverOptions& o, double S_no
     if (!visited.insert(next).second) {
       ContactSolution exact = dual_active_set(S, o, sc, lambda.cwiseMax(0.0), k);
       exact.active_set_changes = sol.active_set_changes;
+      exact.active_history = std::move(sol.active_history);
       exact.cycled_at = k;
       return exact;
     }

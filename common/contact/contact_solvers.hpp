@@ -65,6 +65,7 @@ struct ContactSolution {
   int cycled_at = 0;       // pdas: the iteration that met an active set again (0: none), after
                            // which the dual active-set method finished the solve
   int active_set_changes = 0;  // pdas: rows that entered or left the active set, over all steps
+  std::vector<std::vector<int>> active_history;  // pdas: the rows each Newton step held active
 };
 
 // The complementarity residual, dimensionless:

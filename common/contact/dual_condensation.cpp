@@ -191,6 +191,9 @@ DualContactSolution solve_dual_contact(CondensedContact& c, const DualContactOpt
     crosses.restore();
     sol.iterations = step;
     sol.active_sizes.push_back(static_cast<int>(std::count(sol.active.begin(), sol.active.end(), true)));
+    sol.active_history.emplace_back();
+    for (int i = 0; i < m; ++i)
+      if (sol.active[i]) sol.active_history.back().push_back(i);
 
     // lambda = (r - A v) at the pivots of the active rows, zero elsewhere; w = v at the pivots.
     {

@@ -66,6 +66,7 @@ struct DualContactSolution {
   double residual = 0;           // complementarity residual (contact_solvers.hpp) at the end
   std::vector<int> active_sizes;  // |A| of each step
   int active_set_changes = 0;     // rows that entered or left A, over all steps
+  std::vector<std::vector<int>> active_history;  // the rows of A in each step, in order
 };
 
 // Throws std::runtime_error when the active set has not settled within max_iterations.

@@ -17,7 +17,7 @@
 #include "common/fem/errors.hpp"
 #include "common/contact/manufactured_contact.hpp"
 #include "common/study/options.hpp"
-#include "common/interface/pressure_norms.hpp"
+#include "common/contact/pressure_norms.hpp"
 
 namespace mortar {
 

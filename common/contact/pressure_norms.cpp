@@ -1,4 +1,4 @@
-#include "common/interface/pressure_norms.hpp"
+#include "common/contact/pressure_norms.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
