@@ -1,15 +1,25 @@
 #include "exercise.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace exercise {
 
-Eigen::Matrix2d dual_element_coefficients(double h) {
-  Eigen::Matrix2d mass;  // M_e(k, l) = int_e phi_k phi_l
-  mass << h / 3, h / 6, h / 6, h / 3;
-  Eigen::Matrix2d lumped = Eigen::Matrix2d::Zero();  // D_e = diag(int_e phi_a, int_e phi_b)
-  lumped(0, 0) = h / 2;
-  lumped(1, 1) = h / 2;
-  // int_e psi_k phi_l = (A_e M_e)(k, l) must equal D_e(k, l)
-  return lumped * mass.inverse();
+Eigen::Matrix2d dual_element_coefficients(double h, double theta) {
+  if (!(h > 0)) throw std::invalid_argument("dual_element_coefficients: h must be positive, got " + std::to_string(h));
+  if (!(theta > 0 && theta <= 1))
+    throw std::invalid_argument("dual_element_coefficients: theta must be in (0, 1], got " + std::to_string(theta));
+  // The covered part's mass matrix, M(k, l) = int_0^theta phi_k phi_l h ds
+  const double t = theta, t2 = t * t, t3 = t2 * t;
+  Eigen::Matrix2d mass;
+  mass << h * (t - t2 + t3 / 3), h * (t2 / 2 - t3 / 3),  //
+      h * (t2 / 2 - t3 / 3), h * t3 / 3;
+  // and D = diag(int_0^theta phi_a h ds, int_0^theta phi_b h ds), the row sums of M
+  Eigen::Matrix2d weights = Eigen::Matrix2d::Zero();
+  weights(0, 0) = h * (t - t2 / 2);
+  weights(1, 1) = h * t2 / 2;
+  // int psi_k phi_l = (A_e M)(k, l) must equal D(k, l)
+  return weights * mass.inverse();
 }
 
 }  // namespace exercise

@@ -8,10 +8,12 @@
 namespace exercise {
 
 // For a P2 trace of N >= 2 elements (2N + 1 nodes: node 2e is x_e, node 2e + 1 the midpoint of
-// element e), the (2N - 1) x (2N + 1) matrix C with psi_r = sum_j C(r, j) phi^1_j: continuous
-// P2 on Gamma_c, P1 on the two end elements, one row per node other than the two end-element
-// midpoints, in order along Gamma_c. Throws std::invalid_argument for a trace of degree other
-// than 2 or of fewer than 2 elements.
-Eigen::MatrixXd p2_multiplier_basis(const mortar::InterfaceTrace& trace1);
+// element e), the matrix C with psi_r = sum_j C(r, j) phi^1_j, 2N + 1 columns, one row per basis
+// function, of the multiplier space: continuous P2 on Gamma_c, P1 on the first element when
+// linear_first and on the last when linear_last (the end elements that touch a crosspoint a_1,
+// a_2 in the paper's M_h^1; an end of Gamma_c that is no crosspoint keeps full P2 there). The
+// basis is the nodal one of the nodes whose values stay free, in order along Gamma_c. Throws
+// std::invalid_argument for a trace of degree other than 2 or of fewer than 2 elements.
+Eigen::MatrixXd p2_multiplier_basis(const mortar::InterfaceTrace& trace1, bool linear_first, bool linear_last);
 
 }  // namespace exercise
