@@ -139,3 +139,20 @@ TEST(PlotOutputs, the_same_figure_drawn_twice_gives_the_same_pdf) {
   EXPECT_EQ(read(folder / "errors.pdf"), first);  // no creation time left in it
   fs::remove_all(folder);
 }
+
+// Greek names in labels are set as the letters when no letter touches them: "Gamma_c" becomes
+// "Γ_c" and "nu1" "ν1", while "alphabet" and "menu" stay as they are.
+TEST(PlotOutputs, greek_names_are_set_as_letters) {
+  const fs::path folder = fresh_folder("greek");
+  mortar::Figure fig = loglog_figure();
+  fig.title = "lambda_h on Gamma_c, nu1 = 0.3, alphabet, menu";
+  fig.ylabel = "-sigma_N [Pa]";
+  fig.series[0].title = "psi_i and phi_j";
+  mortar::write_figure(folder.string(), "greek", fig, false);
+  const std::string gp = read(folder / "greek.gp");
+  EXPECT_NE(gp.find("set title 'λ_h on Γ_c, ν1 = 0.3, alphabet, menu'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set ylabel '-σ_N [Pa]'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("title 'ψ_i and φ_j'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set encoding utf8"), std::string::npos) << gp;
+  fs::remove_all(folder);
+}
