@@ -27,6 +27,6 @@ void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel&
 
 // hertz_pressure.png: the Hertz contact pressure of both bases on the finest level, zoomed on
 // the contact zone: the coefficients of both, and the dual function with its negative parts.
-void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, bool run);
+void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, const HertzOptions& o, bool run);
 
 }  // namespace chapter06

@@ -158,9 +158,9 @@ int main(int argc, char** argv) {
     chapter06::plot_dual_pressure(o.out, *dual.coarsest, exact, run);
     mortar::plot_pressure(o.out, finest, exact, "dual multipliers: the coefficients lambda_i at their nodes, finest mesh", run);
     mortar::plot_jump(o.out, finest, "dual multipliers: normal jump [u_h.n], finest mesh", run);
-    mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run);
+    mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run, "integral matching, dual basis");
     if (hertz_study) {
-      chapter06::plot_hertz_pressure(o.out, *hertz_study, run);
+      chapter06::plot_hertz_pressure(o.out, *hertz_study, hertz, run);
       const chapter06::HertzLevel &s = hertz_study->standard.back(), &d = hertz_study->dual.back();
       char title[160];
       std::snprintf(title, sizeof title, "Hertz, finest level (%d dofs, h_2/h_1 = %.3g): the active set, step by step",

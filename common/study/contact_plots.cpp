@@ -59,7 +59,8 @@ const std::vector<ErrorCurve>& error_curves() {
   return curves;
 }
 
-// C h^p through the anchor's finest point lowered by the offset, over the anchor's h range,
+// C h^p through the anchor's finest point (or, with at_coarsest, its coarsest) lowered by the
+// offset, over the anchor's h range,
 // with its label (the theorem that bounds the anchor): each slope in its own colour and dash
 // (reference_slope_style, by its place in the list), unlike the data and the other slopes.
 Series reference_line(const Series& anchor, const ReferenceSlope& r, std::size_t k) {
@@ -68,7 +69,8 @@ Series reference_line(const Series& anchor, const ReferenceSlope& r, std::size_t
     if (anchor.x[i] < anchor.x[finest]) finest = i;
     if (anchor.x[i] > anchor.x[coarsest]) coarsest = i;
   }
-  const double C = (1 - r.offset) * anchor.y[finest] / std::pow(anchor.x[finest], r.slope);
+  const std::size_t through = r.at_coarsest ? coarsest : finest;
+  const double C = (1 - r.offset) * anchor.y[through] / std::pow(anchor.x[through], r.slope);
   char fallback[32];
   std::snprintf(fallback, sizeof fallback, "slope %g", r.slope);
   Series line{r.label.empty() ? fallback : r.label, {}, {}, "lines",
@@ -216,17 +218,17 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
 }
 
 void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise,
-                     const PatchTestResult& integral, bool run) {
+                     const PatchTestResult& integral, bool run, const std::string& integral_label) {
   Figure fig;
-  fig.title = "patch test, h2/h1 = 3/7: sigma_{22} in the triangles along Gamma_c (exact: -p)";
+  fig.title = "patch test, h_2/h_1 = 3/7: sigma_{22} in the triangles along Gamma_c (exact: -p)";
   fig.xlabel = "x of the triangle's centroid [m]";
   fig.ylabel = "sigma_{22} / p [-]";
   fig.key = "outside right top";
   fig.width = 1200;
   fig.series.push_back(curve_series(pointwise.sigma22_body1, "pointwise matching, body 1", "linespoints", "pt 6 lc rgb '#d62728'"));
   fig.series.push_back(curve_series(pointwise.sigma22_body2, "pointwise matching, body 2", "linespoints", "pt 4 lc rgb '#ff7f0e'"));
-  fig.series.push_back(curve_series(integral.sigma22_body1, "integral matching, body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));
-  fig.series.push_back(curve_series(integral.sigma22_body2, "integral matching, body 2", "linespoints", "pt 5 lw 2 lc rgb '#17becf'"));
+  fig.series.push_back(curve_series(integral.sigma22_body1, integral_label + ", body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));
+  fig.series.push_back(curve_series(integral.sigma22_body2, integral_label + ", body 2", "linespoints", "pt 5 lw 2 lc rgb '#17becf'"));
   write_figure(folder, "patch_test", fig, run);
 }
 

@@ -31,7 +31,9 @@ void plot_pressure(const std::string& folder, const BilateralLevel& level,
                    const ManufacturedContact& exact, const std::string& title, bool run);
 void plot_jump(const std::string& folder, const BilateralLevel& level, const std::string& title,
                bool run);
+// `integral_label` names the integral method's curves (chapter 6: "integral matching, dual basis").
 void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise,
-                     const PatchTestResult& integral, bool run);
+                     const PatchTestResult& integral, bool run,
+                     const std::string& integral_label = "integral matching");
 
 }  // namespace mortar
