@@ -181,7 +181,8 @@ void plot_hertz_pressure(const std::string& folder, const HertzStudy& study, con
       coefficients.y.push_back(d.pressure.value[j]);
     }
   fig.series = {model, function, standard, coefficients};
-  fig.key = "bottom center";
+  fig.key = "below";  // inside, it would hide the dual function's dips at the edges
+  fig.height = 760;
   fig.settings = {"set xzeroaxis lt -1"};
   mortar::write_figure(folder, "hertz_pressure", fig, run);
 }

@@ -47,10 +47,10 @@ void parse(mortar::OptionParser& parser, ChapterOptions& c, int argc, char** arg
 // (contact_plots.hpp numbering): an upper bound C h^p drawn there has every finer measurement
 // below it when the theorem holds, whatever the constant.
 std::vector<mortar::ReferenceSlope> theorem_slopes(mortar::Matching m) {
-  if (m == mortar::Matching::pointwise) return {{0.5, 0, 0.0, "slope 1/2: energy, Theorem 4.1's bound", "", true}};
-  return {{2.0, 0, 0.0, "slope 2: energy, Theorem 4.2's bound (q = 2)", "", true},
-          {2.0, 4, 0.0, "slope 2: pressure in H^{-1/2} (Theorem 4.2 + inf-sup); drawn beside its stand-in, H^{-1/2}_h", "", true},
-          {1.5, 2, 0.0, "slope 3/2: pressure in L^2, the bound an inverse inequality gives", "", true}};
+  if (m == mortar::Matching::pointwise) return {{0.5, 0, 0.0, "slope 1/2: energy bound, Theorem 4.1", "", true}};
+  return {{2.0, 0, 0.0, "slope 2: energy bound, Theorem 4.2 (q = 2)", "", true},
+          {2.0, 4, 0.0, "slope 2: H^{-1/2} bound (Thm 4.2 + inf-sup), beside H^{-1/2}_h", "", true},
+          {1.5, 2, 0.0, "slope 3/2: L^2 bound (inverse inequality)", "", true}};
 }
 }  // namespace
 
