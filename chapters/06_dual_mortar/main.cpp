@@ -24,6 +24,7 @@
 #include "figures.hpp"
 #include "hertz_study.hpp"
 #include "partial_coverage.hpp"
+#include "common/study/two_body_pictures.hpp"
 #include "common/interface/dual_basis.hpp"
 #include "common/study/bilateral_study.hpp"
 #include "common/study/contact_plots.hpp"
@@ -159,6 +160,8 @@ int main(int argc, char** argv) {
     mortar::plot_pressure(o.out, finest, exact, "dual multipliers: the coefficients lambda_i at their nodes, finest mesh", run);
     mortar::plot_jump(o.out, finest, "dual multipliers: normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run, "integral matching, dual basis");
+    // the finest level for ParaView: both bodies deformed, the dual coefficients and the jump on Gamma_c
+    mortar::write_two_body_vtu(o.out, finest.bodies, finest.solution.u, finest.pressure, finest.jump);
     if (hertz_study) {
       chapter06::plot_hertz_pressure(o.out, *hertz_study, hertz, run);
       const chapter06::HertzLevel &s = hertz_study->standard.back(), &d = hertz_study->dual.back();
