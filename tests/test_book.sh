@@ -69,6 +69,13 @@ if [ -n "$stray" ]; then
   printf '%s\n' "$stray" | head -5
   fail "a heading printed as text (\"## ...\") in the HTML: a blank line is missing before it in the notes"
 fi
+# ... or, after a list item, folded into the item's text: a heading in the notes needs a blank
+# line before it
+for note in "$source_dir"/README.md "$source_dir"/chapters/0[0-9]_*/README.md "$source_dir"/exercises/*README.md \
+            "$source_dir"/exercises/[0-9][0-9]_*/README.md; do
+  glued=$(awk '/^```/ {code = !code} !code && FNR > 1 && prev != "" && /^#+ / {print FILENAME ":" FNR ": " $0} {prev = $0}' "$note")
+  [ -z "$glued" ] || { printf '%s\n' "$glued"; fail "a heading with no blank line before it"; }
+done
 pages=$(pdfinfo "$pdf" | sed -n 's/^Pages: *//p')
 echo "course.pdf: $pages pages, course.html: $(du -k "$html" | cut -f1) kB"
 [ "${pages:-0}" -ge "$min_pages" ] || fail "course.pdf has $pages pages, expected at least $min_pages"
