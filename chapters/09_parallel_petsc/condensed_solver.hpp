@@ -16,7 +16,7 @@
 //
 // On the free unknowns M_step^{-1} inverts a Schur complement of T^T M T, not its restriction:
 // the two differ by a term of rank at most the number of fixed pivots. With few fixed (Hertz)
-// the final solves stay at 55-113 iterations up to 13.6M unknowns; with all fixed (the
+// the final solves stay at 57-119 iterations up to 13.6M unknowns; with all fixed (the
 // manufactured scene, bilateral) they grow like h^-0.43 (chapter 9's notes).
 #pragma once
 
