@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -155,4 +156,45 @@ TEST(PlotOutputs, greek_names_are_set_as_letters) {
   EXPECT_NE(gp.find("title 'ψ_i and φ_j'"), std::string::npos) << gp;
   EXPECT_NE(gp.find("set encoding utf8"), std::string::npos) << gp;
   fs::remove_all(folder);
+}
+
+// A P1 triangle is drawn as its three vertices and back; a P2 triangle as three parabolas of
+// 8 chords through its midpoint nodes: with the midpoint of edge 0 moved off the chord, the
+// drawn edge passes through it at s = 1/2 and through 3/4 of it at s = 1/4.
+TEST(PlotOutputs, p2_edges_are_drawn_through_their_midpoint_nodes) {
+  mortar::Mesh p1;
+  p1.nodes = {{0, 0}, {1, 0}, {0, 1}};
+  p1.triangles = {{0, 1, 2}};
+  const mortar::Series straight = mortar::mesh_edges(p1, "P1");
+  ASSERT_EQ(straight.x.size(), 5u);  // a, b, c, a, then the break
+  EXPECT_EQ(straight.x[3], 0.0);
+  EXPECT_EQ(straight.y[2], 1.0);
+  EXPECT_TRUE(std::isnan(straight.x[4]));
+
+  mortar::Mesh p2 = p1;
+  p2.nodes.push_back({0.5, 0.2});  // edge 0 (0 -> 1), bent
+  p2.nodes.push_back({0.5, 0.5});  // edge 1 (1 -> 2)
+  p2.nodes.push_back({0.0, 0.5});  // edge 2 (2 -> 0)
+  p2.edge_nodes = {{3, 4, 5}};
+  const mortar::Series curved = mortar::mesh_edges(p2, "P2");
+  ASSERT_EQ(curved.x.size(), 3u * 8u + 1u + 1u);  // 25 points around, then the break
+  EXPECT_NEAR(curved.x[4], 0.5, 1e-15);  // s = 1/2 on edge 0: the midpoint node
+  EXPECT_NEAR(curved.y[4], 0.2, 1e-15);
+  EXPECT_NEAR(curved.x[2], 0.25, 1e-15);  // s = 1/4: 4 s (1 - s) = 3/4 of the midpoint's lift
+  EXPECT_NEAR(curved.y[2], 0.15, 1e-15);
+  EXPECT_NEAR(curved.x[24], 0.0, 1e-15);  // closed: back at vertex 0
+  EXPECT_NEAR(curved.y[24], 0.0, 1e-15);
+}
+
+// The top of a log y axis two decades above the highest point's decade, and none with no data.
+TEST(PlotOutputs, room_above_data_raises_the_top_of_the_axis) {
+  mortar::Figure fig = loglog_figure();
+  fig.series[0].y = {3.0, 1.6e4, std::numeric_limits<double>::quiet_NaN()};
+  fig.series[0].x = {1.0, 2.0, 3.0};
+  mortar::room_above_data(fig, 2);
+  ASSERT_EQ(fig.settings.size(), 1u);
+  EXPECT_EQ(fig.settings[0], "set yrange [:1e+07]");
+  mortar::Figure empty;
+  mortar::room_above_data(empty, 2);
+  EXPECT_TRUE(empty.settings.empty());
 }

@@ -58,15 +58,14 @@ int main(int argc, char** argv) {
 
     // 5. Figures.
     const bool run = !o.no_plot;
-    char title[96];
-    std::snprintf(title, sizeof title, "pointwise matching, h2/h1 = %.3g: errors against h", o.h_ratio);
-    mortar::plot_contact_errors(o.out, study.table, title,
+    const std::string name = "pointwise matching, " + mortar::mesh_label(o);
+    mortar::plot_contact_errors(o.out, study.table, name + ": errors against h",
                                 {{0.5, 0, 0.4, "slope 1/2 (Theorem 4.1: h1^{1/2} + h2)", ""},
                                  {1.0, 0, 0.7, "slope 1 (what integral matching reaches, for comparison)", ""}}, run);
-    mortar::plot_contact_error_vs_time(o.out, study.table, "pointwise matching: error against wall time", run);
+    mortar::plot_contact_error_vs_time(o.out, study.table, name + ": error against wall time", run);
     mortar::plot_pressure(o.out, finest, exact,
-                          "pointwise matching: nodal force / tributary length, finest mesh", run);
-    mortar::plot_jump(o.out, finest, "pointwise matching: normal jump [u_h.n], finest mesh", run);
+                          name + ": nodal force / tributary length, finest mesh", run);
+    mortar::plot_jump(o.out, finest, name + ": normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
     mortar::write_bilateral_pictures(o, study);

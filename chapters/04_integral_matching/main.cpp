@@ -64,17 +64,18 @@ int main(int argc, char** argv) {
 
     // 5. Figures.
     const bool run = !o.no_plot;
+    const std::string name = "integral matching, " + mortar::mesh_label(o);
     //    Reference slopes only beside what a theorem bounds: the energy and the pressure in
     //    H^{-1/2} (Theorem 4.2, with the inf-sup condition for lambda_h), and the pressure in
     //    L2, where the inverse inequality leaves h^{1/2}.
-    mortar::plot_contact_errors(o.out, study.table, "integral matching: errors against h",
+    mortar::plot_contact_errors(o.out, study.table, name + ": errors against h",
                                 {{1.0, 0, 0.4, "slope 1: energy, Theorem 4.2", ""},
                                  {1.0, 4, 0.4, "slope 1: pressure in H^{-1/2}, Theorem 4.2 + inf-sup", ""},
                                  {0.5, 2, 0.4, "slope 1/2: pressure in L^2, guaranteed", ""}},
                                 run);
-    mortar::plot_contact_error_vs_time(o.out, study.table, "integral matching: error against wall time", run);
-    mortar::plot_pressure(o.out, finest, exact, "integral matching: contact pressure lambda_h, finest mesh", run);
-    mortar::plot_jump(o.out, finest, "integral matching: normal jump [u_h.n], finest mesh", run);
+    mortar::plot_contact_error_vs_time(o.out, study.table, name + ": error against wall time", run);
+    mortar::plot_pressure(o.out, finest, exact, name + ": contact pressure lambda_h, finest mesh", run);
+    mortar::plot_jump(o.out, finest, name + ": normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);
     // 6. Pictures of the problem, and the finest level for ParaView.
     mortar::write_bilateral_pictures(o, study);

@@ -14,6 +14,11 @@ using mortar::Figure;
 using mortar::Series;
 
 namespace {
+// "scene hertz, integral matching, pdas, h_2/h_1 = 1.5, non-mortar body 1"
+std::string run_label(const Options& o) {
+  return "scene " + o.scene + ", " + o.matching + " matching, " + o.solver + ", " + mortar::mesh_label(o);
+}
+
 // What each error column measures, in words (gnuplot would read "_" as a subscript).
 std::string describe(const std::string& column) {
   if (column == "err_energy") return "u, broken energy norm";
@@ -83,7 +88,7 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
                     const mortar::ExactContact& exact,
                     const std::vector<const UnilateralLevel*>& levels, bool run) {
   Figure fig;
-  fig.title = "contact pressure on the finest mesh, scene " + o.scene;
+  fig.title = run_label(o) + ": contact pressure on the finest mesh";
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "contact pressure p [Pa]";
   fig.key = "outside below maxrows 3";
@@ -109,13 +114,13 @@ void plot_pressures(const std::string& folder, const Options& o, const Reference
     fig.series.push_back({name, r.pressure.x, r.pressure.value, "linespoints", styles[k % 2]});
   }
   if (ref.kind == "hertz") {  // the contact zone only: 4 reference half-widths around L/2
-    fig.title = "contact pressure on the finest mesh against the finite-body reference, scene hertz";
+    fig.title = run_label(o) + ": contact pressure on the finest mesh, beside the reference";
     keep_window(fig, o.L / 2 - 2 * ref.hertz->half_width.value, o.L / 2 + 2 * ref.hertz->half_width.value);
   }
   mortar::write_figure(folder, "pressure", fig, run);
 }
 
-void plot_contact_state(const std::string& folder, const UnilateralLevel& r, bool run) {
+void plot_contact_state(const std::string& folder, const Options& o, const UnilateralLevel& r, bool run) {
   // The pressure on the left axis [Pa]; the open gap g - [u.n] and the jump [u.n] on the right
   // axis in metres, as computed (never divided by their own maximum: a round-off gap of 1e-8 m
   // would look like a penetration). Both axes put zero at the same height; the right axis
@@ -137,7 +142,7 @@ void plot_contact_state(const std::string& folder, const UnilateralLevel& r, boo
   const double M = std::max(m_top, -m_lo / below);
 
   Figure fig;
-  fig.title = "the state of Gamma_c on the finest mesh: pressure (left axis), gap and jump in metres (right axis)";
+  fig.title = run_label(o) + ": the state of Gamma_c on the finest mesh";
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "contact pressure p [Pa]";
   fig.y2label = "open gap g - [u.n], jump [u.n] [m]";
@@ -168,9 +173,9 @@ void plot_contact_state(const std::string& folder, const UnilateralLevel& r, boo
   mortar::write_figure(folder, "contact_state", fig, run);
 }
 
-void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, bool run) {
+void plot_errors(const std::string& folder, const Options& o, const mortar::ConvergenceTable& table, bool run) {
   Figure fig;
-  fig.title = "relative errors against h (chosen matching and solver)";
+  fig.title = run_label(o) + ": relative errors against h";
   fig.xlabel = "h = max(h1, h2) [m]";
   const auto& columns = table.columns();
   const bool has_point = std::find(columns.begin(), columns.end(), "err_contact_point") != columns.end();
@@ -195,10 +200,8 @@ void plot_theorem_5_1(const std::string& folder, const Options& o, const mortar:
                       const std::vector<SolverRun>& runs, bool run) {
   Figure fig;
   char title[200];
-  std::snprintf(title, sizeof title,
-                "scene %s, h_2/h_1 = %.4g, non-mortar side %d: energy error against h (slopes through the coarsest point)",
-                o.scene.c_str(), o.h_ratio, o.nonmortar);
-  fig.title = title;
+  fig.title = "scene " + o.scene + ", " + mortar::mesh_label(o) +
+              ": energy error against h (slopes through the coarsest point)";
   fig.xlabel = "h = max(h_1, h_2) [m]";
   fig.ylabel = "relative error of u in the broken energy norm [-]";
   fig.log_x = fig.log_y = true;
@@ -242,10 +245,7 @@ void plot_edge_pressure(const std::string& folder, const Options& o, const morta
   const double h = std::max(levels[first].h1, levels[first].h2);  // the coarsest of the three
   const double lo = edge - 6 * h, hi = edge + 3 * h;
   Figure fig;
-  char title[200];
-  std::snprintf(title, sizeof title, "scene hertz-exact, %s matching, h2/h1 = %.4g: pressure at the right edge x = L/2 + a",
-                o.matching.c_str(), o.h_ratio);
-  fig.title = title;
+  fig.title = run_label(o) + ": pressure near the right edge";
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = o.matching == "integral" ? "contact pressure lambda_h [Pa]" : "nodal force / tributary length [Pa]";
   fig.key = "outside below maxrows 2";
@@ -273,10 +273,10 @@ void plot_edge_pressure(const std::string& folder, const Options& o, const morta
   mortar::write_figure(folder, "edge_pressure", fig, run);
 }
 
-void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable& table,
+void plot_hertz_errors(const std::string& folder, const Options& o, const mortar::ConvergenceTable& table,
                        const HertzReference& ref, bool run) {
   Figure fig;
-  fig.title = "Hertz scene: discretization error (against the finite-body reference) and model error";
+  fig.title = run_label(o) + ": discretization error and model error";
   fig.xlabel = "h = max(h1, h2) [m]";
   fig.ylabel = "relative error against the reference [-]";
   fig.log_x = fig.log_y = true;
@@ -314,21 +314,25 @@ void plot_hertz_errors(const std::string& folder, const mortar::ConvergenceTable
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 
-void plot_solver_comparison(const std::string& folder, const std::vector<SolverRun>& runs,
+void plot_solver_comparison(const std::string& folder, const Options& o, const std::vector<SolverRun>& runs,
                             const std::string& error_name, bool run) {
   Figure iterations, timing;
-  iterations.title = "iterations to reach the complementarity tolerance, against h";
+  const std::string scene = "scene " + o.scene + ", " + mortar::mesh_label(o);  // every matching and solver
+  iterations.title = scene + ": iterations to reach the complementarity tolerance, against h";
   iterations.xlabel = "h = max(h1, h2) [m]";
   iterations.ylabel = "iterations [-]";
   iterations.log_x = iterations.log_y = true;
-  iterations.key = "outside right top";
-  iterations.width = 1200;
-  timing.title = "error against wall time: solvers, matchings, sparse Cholesky";
+  // the key below, in columns: beside the plot it took 40% of the width
+  iterations.key = "top right";  // above the data: the y range is raised below
+  iterations.width = 1000;
+  iterations.height = 700;
+  timing.title = scene + ": error against wall time, every solver and matching";
   timing.xlabel = "wall time of the level [s]";
   timing.ylabel = "relative error: " + describe(error_name) + " [-]";
   timing.log_x = timing.log_y = true;
-  timing.key = "outside right top";
-  timing.width = 1200;
+  timing.key = "top right";
+  timing.width = 1000;
+  timing.height = 700;
   const char* colours[] = {"'#1f77b4'", "'#ff7f0e'", "'#d62728'", "'#2ca02c'", "'#9467bd'"};
   int k = 0;
   for (const std::string matching : {"integral", "pointwise"})
@@ -363,7 +367,10 @@ void plot_solver_comparison(const std::string& folder, const std::vector<SolverR
   // --rho beyond its bound) still gets its figures
   for (std::size_t s = 0; s < iterations.series.size(); ++s)
     if (iterations.series[s].title == "integral, uzawa" && !iterations.series[s].x.empty())
-      iterations.slopes.push_back({-1.0, static_cast<int>(s), 0.0, "slope -1: plain Uzawa needs about cond(S) ~ 1/h steps", ""});
+      iterations.slopes.push_back({-1.0, static_cast<int>(s), 0.0, "slope -1: plain Uzawa needs about cond(S) ∝ 1/h steps", ""});
+  // the keys inside, over empty decades: beside the plot they took 40% of the width
+  mortar::room_above_data(iterations, 2);
+  mortar::room_above_data(timing, 2);
   mortar::write_figure(folder, "iterations", iterations, run);
   mortar::write_figure(folder, "error_vs_time", timing, run);
 }

@@ -140,25 +140,25 @@ int main(int argc, char** argv) {
       if (l) shown.push_back(l.get());
     if (shown.empty()) shown.push_back(finest.get());
     chapter05::plot_pressures(o.out, o, ref, exact, shown, run);
-    chapter05::plot_contact_state(o.out, f, run);
+    chapter05::plot_contact_state(o.out, o, f, run);
     if (!active_sets.steps.empty()) {
       char title[160];
       std::snprintf(title, sizeof title, "scene %s, finest level (%d dofs, h_2/h_1 = %.3g): the active set, step by step",
                     o.scene.c_str(), f.bodies.num_dofs(), o.h_ratio);
       mortar::write_active_sets(o.out, title, {active_sets}, run);
     }
-    if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, table, *ref.hertz, run);
-    else chapter05::plot_errors(o.out, table, run);
+    if (ref.kind == "hertz") chapter05::plot_hertz_errors(o.out, o, table, *ref.hertz, run);
+    else chapter05::plot_errors(o.out, o, table, run);
     if (o.scene == "signorini" || o.scene == "hertz-exact")
       chapter05::plot_theorem_5_1(o.out, o, table, runs, run);
     if (o.scene == "hertz-exact") chapter05::plot_edge_pressure(o.out, o, exact, pressures, run);
     if (o.compare)
-      chapter05::plot_solver_comparison(o.out, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);
+      chapter05::plot_solver_comparison(o.out, o, runs, ref.kind == "exact" ? "err_energy" : "err_pressure", run);
 
     // 7. Pictures of the problem: the coarsest level's meshes and deformed bodies, and the
     //    finest level for ParaView.
     const chapter05::UnilateralLevel& c = *coarsest;
-    const std::string name = mortar::matching_name(matching) + " matching, scene " + o.scene;
+    const std::string name = mortar::matching_name(matching) + " matching, scene " + o.scene + ", " + mortar::mesh_label(o);
     mortar::write_figure(o.out, "meshes", mortar::two_body_meshes(c.bodies, c.gamma, matching, name), run);
     mortar::write_figure(o.out, "deformed",
                          mortar::deformed_two_bodies(c.bodies, c.u, name + ", coarsest level", c.gap), run);

@@ -73,8 +73,8 @@ void plot_dual_basis(const std::string& folder, bool run) {
 }
 
 void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTable& dual,
-                          const mortar::ConvergenceTable* standard, bool run) {
-  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers: errors against h (h2/h1 fixed)",
+                          const mortar::ConvergenceTable* standard, const std::string& mesh, bool run) {
+  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers, " + mesh + ": errors against h",
                                "h = max(h1, h2) [m]", "relative error [-]", "top left");
   fig.series.push_back(mortar::table_series(dual, "h", "err_energy", "dual: u, energy", "pt 7 lw 2 lc rgb '#d62728'"));
   fig.series.push_back(mortar::table_series(dual, "h", "err_pressure_function", "dual: lambda_h as a function, L2",
@@ -89,12 +89,13 @@ void plot_bases_against_h(const std::string& folder, const mortar::ConvergenceTa
   // A slope where theory speaks: the energy (Theorem 4.2), and the dual function, whose span
   // reproduces constants only (best approximation O(h) in L2), run parallel to it.
   fig.slopes = {{1.0, 0, 0.4, "slope 1: energy (Theorem 4.2); the dual span's L2 order", ""}};
+  mortar::room_above_data(fig, 2);  // the key over empty decades, clear of the coarsest points
   mortar::write_figure(folder, "standard_vs_dual", fig, run);
 }
 
 void plot_bases_against_time(const std::string& folder, const mortar::ConvergenceTable& dual,
-                             const mortar::ConvergenceTable* standard, bool run) {
-  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers: energy error against wall time",
+                             const mortar::ConvergenceTable* standard, const std::string& mesh, bool run) {
+  mortar::Figure fig = mortar::log_log_figure("standard and dual multipliers, " + mesh + ": energy error against wall time",
                                "wall time of the level [s]", "relative error, broken energy norm [-]", "top right");
   fig.series.push_back(mortar::table_series(dual, "time_s", "err_energy", "dual: condensed, one Cholesky of T^T K T",
                                      "pt 7 lw 2 lc rgb '#d62728'"));
@@ -107,7 +108,7 @@ void plot_bases_against_time(const std::string& folder, const mortar::Convergenc
 }
 
 void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel& level,
-                        const mortar::ManufacturedContact& exact, bool run) {
+                        const mortar::ManufacturedContact& exact, const std::string& mesh, bool run) {
   const mortar::BilateralSolution& s = level.solution;
   const mortar::BrokenCurve f = mortar::multiplier_function(s.gamma, s.constraints, s.lambda);
   const auto panel = [&](double a, double b, const std::string& title) {
@@ -137,7 +138,7 @@ void plot_dual_pressure(const std::string& folder, const mortar::BilateralLevel&
   };
   const double L = level.pressure.x.back();
   const double h = s.gamma.nonmortar_trace.max_element_length();
-  mortar::Figure fig = panel(0, L, "dual multipliers, coarsest level: the pressure on Gamma_c");
+  mortar::Figure fig = panel(0, L, "dual multipliers, " + mesh + ", coarsest level: the pressure on Gamma_c");
   fig.panels.push_back(panel(0.5 * L - 3 * h, 0.5 * L + 3 * h, "zoom on six elements: the function jumps at every node"));
   mortar::write_figure(folder, "dual_pressure", fig, run);
 }

@@ -152,13 +152,14 @@ int main(int argc, char** argv) {
 
     // 7. Figures.
     const bool run = !o.no_plot;
+    const std::string mesh = mortar::mesh_label(o);
     chapter06::plot_dual_basis(o.out, run);
     const mortar::ConvergenceTable* standard_table = standard ? &standard->table : nullptr;
-    chapter06::plot_bases_against_h(o.out, dual.table, standard_table, run);
-    chapter06::plot_bases_against_time(o.out, dual.table, standard_table, run);
-    chapter06::plot_dual_pressure(o.out, *dual.coarsest, exact, run);
-    mortar::plot_pressure(o.out, finest, exact, "dual multipliers: the coefficients lambda_i at their nodes, finest mesh", run);
-    mortar::plot_jump(o.out, finest, "dual multipliers: normal jump [u_h.n], finest mesh", run);
+    chapter06::plot_bases_against_h(o.out, dual.table, standard_table, mesh, run);
+    chapter06::plot_bases_against_time(o.out, dual.table, standard_table, mesh, run);
+    chapter06::plot_dual_pressure(o.out, *dual.coarsest, exact, mesh, run);
+    mortar::plot_pressure(o.out, finest, exact, "dual multipliers, " + mesh + ": the coefficients lambda_i at their nodes, finest mesh", run);
+    mortar::plot_jump(o.out, finest, "dual multipliers, " + mesh + ": normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, dual.patch_pointwise, dual.patch_integral, run, "integral matching, dual basis");
     // the finest level for ParaView: both bodies deformed, the dual coefficients and the jump on Gamma_c
     mortar::write_two_body_vtu(o.out, finest.bodies, finest.solution.u, finest.pressure, finest.jump);

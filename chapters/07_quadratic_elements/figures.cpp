@@ -18,9 +18,10 @@ mortar::Series scaled_series(const mortar::ConvergenceTable& table, const std::s
 }  // namespace
 
 void plot_p2_against_p1(const std::string& folder, const mortar::ConvergenceTable& p2,
-                        const mortar::ConvergenceTable& p1, const std::string& matching, bool run) {
+                        const mortar::ConvergenceTable& p1, const std::string& matching,
+                        const std::string& mesh, bool run) {
   // the key where no curve runs (the lower left, below the L2 errors of both degrees)
-  mortar::Figure dofs = mortar::log_log_figure(matching + " matching: P2 and P1 at equal unknowns",
+  mortar::Figure dofs = mortar::log_log_figure(matching + " matching, " + mesh + ": P2 and P1 at equal unknowns",
                                                "unknowns (both bodies) [-]", "relative error [-]",
                                                matching == "integral" ? "bottom left" : "top right");
   dofs.series = {mortar::table_series(p2, "dofs", "err_energy", "P2: u, energy norm", "pt 7 lw 2 lc rgb '#d62728'"),
@@ -37,7 +38,7 @@ void plot_p2_against_p1(const std::string& folder, const mortar::ConvergenceTabl
 
   const double unit = p1.column("limit_s").back();
   mortar::Figure time = mortar::log_log_figure(
-      matching + " matching: energy error against wall time, P2 and P1",
+      matching + " matching, " + mesh + ": energy error against wall time, P2 and P1",
       "wall time of the level / the limit of the finest P1 level [-]", "relative error, energy norm [-]", "top right");
   time.series = {scaled_series(p2, "time_s", unit, "P2: the whole solve", "pt 7 lw 2 lc rgb '#d62728'"),
                  scaled_series(p1, "time_s", unit, "P1: the whole solve", "pt 5 lw 2 lc rgb '#1f77b4'"),

@@ -115,11 +115,9 @@ int main(int argc, char** argv) {
 
     // 6. Figures, the pictures of the problem, the finest level for ParaView.
     const bool run = !o.no_plot;
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.4g", o.h_ratio);
-    const std::string name = c.matching + " matching, P2, h_2/h_1 = " + ratio;
+    const std::string name = c.matching + " matching, P2, " + mortar::mesh_label(o);
     mortar::plot_contact_errors(o.out, study.table, name + ": errors against h", theorem_slopes(matching), run);
-    if (p1) chapter07::plot_p2_against_p1(o.out, study.table, p1->table, c.matching, run);
+    if (p1) chapter07::plot_p2_against_p1(o.out, study.table, p1->table, c.matching, mortar::mesh_label(o), run);
     mortar::plot_pressure(o.out, finest, exact, name + ": contact pressure, finest mesh", run);
     mortar::plot_jump(o.out, finest, name + ": normal jump [u_h.n], finest mesh", run);
     mortar::plot_patch_test(o.out, study.patch_pointwise, study.patch_integral, run);

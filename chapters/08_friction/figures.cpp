@@ -98,9 +98,9 @@ void plot_errors(const std::string& folder, const mortar::ConvergenceTable& tabl
                        run);
 }
 
-void plot_newton(const std::string& folder, const FrictionalLevel& r, bool run) {
+void plot_newton(const std::string& folder, const Options& o, const FrictionalLevel& r, bool run) {
   mortar::Figure fig;
-  fig.title = "semismooth Newton on the finest mesh: the residual after each step";
+  fig.title = "semismooth Newton on the finest mesh, " + scene_title(o) + ": the residual after each step";
   fig.xlabel = "Newton step";
   fig.ylabel = "max |C_n| / Λ, |C_t| / Λ^2 [-]";
   fig.log_y = true;
@@ -122,9 +122,10 @@ void plot_newton(const std::string& folder, const FrictionalLevel& r, bool run) 
   mortar::write_figure(folder, "newton", fig, run);
 }
 
-void plot_stick_zone(const std::string& folder, const std::vector<CattaneoStep>& steps, double a, bool run) {
+void plot_stick_zone(const std::string& folder, const Options& o, const std::vector<CattaneoStep>& steps, double a,
+                     bool run) {
   mortar::Figure fig;
-  fig.title = "Cattaneo-Mindlin: the stick zone as Q grows (finest mesh)";
+  fig.title = scene_title(o) + ": the stick zone as Q grows (finest mesh)";
   fig.xlabel = "Q / (F P) [-]";
   fig.ylabel = "stick half-width / a [-]";
   fig.key = "bottom left";

@@ -22,7 +22,8 @@ struct ExactCurves {
 void plot_zones(const std::string& folder, const FrictionalLevel& r, const Options& o, const ExactCurves& exact,
                 bool run);
 void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, const Options& o, bool run);
-void plot_newton(const std::string& folder, const FrictionalLevel& r, bool run);
-void plot_stick_zone(const std::string& folder, const std::vector<CattaneoStep>& steps, double a, bool run);
+void plot_newton(const std::string& folder, const Options& o, const FrictionalLevel& r, bool run);
+void plot_stick_zone(const std::string& folder, const Options& o, const std::vector<CattaneoStep>& steps, double a,
+                     bool run);
 
 }  // namespace chapter08

@@ -109,11 +109,11 @@ int main(int argc, char** argv) {
       const chapter08::CattaneoMindlin cm(c.P, c.Q, o.friction, chapter08::e_star(o), o.R, 0.5 * o.L);
       curves = {[cm](double x) { return cm.shear(x); }, {}, "Cattaneo-Mindlin q(x) at the computed P, Q",
                 0.5 * o.L - 1.4 * cm.half_width(), 0.5 * o.L + 1.4 * cm.half_width()};
-      chapter08::plot_stick_zone(o.out, cattaneo, cm.half_width(), run);
+      chapter08::plot_stick_zone(o.out, o, cattaneo, cm.half_width(), run);
     }
     chapter08::plot_zones(o.out, f, o, curves, run);
     chapter08::plot_errors(o.out, table, o, run);
-    chapter08::plot_newton(o.out, f, run);
+    chapter08::plot_newton(o.out, o, f, run);
     std::printf("wrote %s\n", o.out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch08_friction: error: %s\n", e.what());

@@ -40,6 +40,12 @@ FinestSize finest_size(const BilateralStudyOptions& o) {
 }
 }  // namespace
 
+std::string mesh_label(const TwoBodyOptions& o) {
+  char text[64];
+  std::snprintf(text, sizeof text, "h_2/h_1 = %.4g, non-mortar body %d", o.h_ratio, o.nonmortar);
+  return text;
+}
+
 void add_two_body_options(OptionParser& parser, TwoBodyOptions& o) {
   parser.add_double("h-ratio", o.h_ratio, "mesh ratio h2 / h1 on Gamma_c (body 2 gets max(2, round(n1 / r)) elements)",
                     Range::closed(0.01, 100));
@@ -371,7 +377,7 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
 }
 
 void write_bilateral_pictures(const BilateralStudyOptions& o, const BilateralStudy& study) {
-  const std::string name = matching_name(study.matching) + " matching";
+  const std::string name = matching_name(study.matching) + " matching, " + mesh_label(o);
   const BilateralLevel& c = *study.coarsest;
   const bool run = !o.no_plot;
   write_figure(o.out, "meshes", two_body_meshes(c.bodies, c.solution.gamma, study.matching, name), run);

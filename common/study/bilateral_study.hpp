@@ -31,6 +31,9 @@ struct TwoBodyOptions {
   int degree = 1;  // q of both bodies: set by the chapter (7: P2), not an option
 };
 void add_two_body_options(OptionParser& parser, TwoBodyOptions& o);
+// "h_2/h_1 = 1.5, non-mortar body 1": the mesh options a figure's title carries, so that runs
+// with other options never give figures with the same title.
+std::string mesh_label(const TwoBodyOptions& o);
 // Unilateral and frictional contact (chapters 5 and 8): the non-mortar side carries the
 // multipliers, and on a body more than 10 times stiffer than the other its nodal conditions see
 // the soft body's motion only through their coarse image: the pressure oscillates from node to

@@ -251,16 +251,40 @@ Figure error_against_time(const std::string& title, const std::string& time_labe
   return fig;
 }
 
+void room_above_data(Figure& fig, int decades) {
+  double top = 0;
+  for (const Series& s : fig.series)
+    for (double y : s.y)
+      if (std::isfinite(y)) top = std::max(top, y);
+  if (!(top > 0)) return;  // nothing drawn: gnuplot's own range
+  char range[64];
+  std::snprintf(range, sizeof range, "set yrange [:%.0e]", std::pow(10.0, std::ceil(std::log10(top)) + decades));
+  fig.settings.push_back(range);
+}
+
 Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra) {
   Series s;
   s.title = title;
   s.style = "lines";
   s.extra = extra;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const auto& t : mesh.triangles) {
-    for (int k = 0; k <= 3; ++k) {
-      s.x.push_back(mesh.nodes[t[k % 3]].x());
-      s.y.push_back(mesh.nodes[t[k % 3]].y());
+  // A P2 edge is the parabola through its two ends and its midpoint node: once the nodes are
+  // moved by u_h it bends, and a straight line between the ends would not be the element.
+  // Drawn as 8 chords, Lagrange's quadratic interpolation at s = 0, 1/8, ..., 1.
+  const int chords = mesh.degree() == 2 ? 8 : 1;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d& a = mesh.nodes[v[k]];
+      const Eigen::Vector2d& b = mesh.nodes[v[(k + 1) % 3]];
+      // edge k of a P2 triangle runs from vertex k to vertex k + 1, midpoint edge_nodes[t][k]
+      const Eigen::Vector2d m = chords > 1 ? mesh.nodes[mesh.edge_nodes[t][k]] : Eigen::Vector2d(0.5 * (a + b));
+      for (int j = k == 0 ? 0 : 1; j <= chords; ++j) {
+        const double r = static_cast<double>(j) / chords;
+        const Eigen::Vector2d p = (1 - r) * (1 - 2 * r) * a + 4 * r * (1 - r) * m + r * (2 * r - 1) * b;
+        s.x.push_back(p.x());
+        s.y.push_back(p.y());
+      }
     }
     s.x.push_back(nan);
     s.y.push_back(nan);

@@ -67,7 +67,13 @@ struct TimedErrors {
 Figure error_against_time(const std::string& title, const std::string& time_label,
                           const std::string& error_label, const TimedErrors& data);
 
-// The edges of a mesh as one Series (each triangle's outline; shared edges drawn twice).
+// Raises the top of a log y axis to `decades` powers of ten above the decade of the highest
+// point, so that a key at the top sits over empty space instead of beside the plot.
+void room_above_data(Figure& fig, int decades);
+
+// The edges of a mesh as one Series (each triangle's outline; shared edges drawn twice). A P2
+// mesh's edges are drawn as the parabolas through their midpoint nodes, so a deformed P2
+// element is drawn with the curved edges it has.
 Series mesh_edges(const Mesh& mesh, const std::string& title, const std::string& extra = "");
 
 }  // namespace mortar
