@@ -39,8 +39,8 @@ void plot_transfers(const std::string& folder, const TransferResult& r, const Tr
   };
   fig.xlabel = "x along Gamma_c [m]";
   fig.ylabel = "trace value w [m]";
-  fig.key = "outside right top";
-  fig.width = 1200;
+  fig.key = "top left";  // over the room left above the curves (the y range, below)
+  fig.width = 1000;
   fig.height = 650;
   Series exact{"exact w", {}, {}, "lines", "lw 1 lc rgb '#000000'"};
   for (int i = 0; i <= 400; ++i) {
@@ -55,8 +55,15 @@ void plot_transfers(const std::string& folder, const TransferResult& r, const Tr
                         "pt 9 ps 1.5 lw 2 lc rgb '#d62728'"});
   fig.series.push_back({with_integral("mortar projection to side 1", mortar::integral(r.trace1, r.mortar)), r.trace1.x, r.mortar, "linespoints",
                         "pt 7 ps 1.2 lw 2 lc rgb '#1f77b4'"});
-  double lo = std::numeric_limits<double>::infinity();
-  for (const auto& s : fig.series) lo = std::min(lo, *std::min_element(s.y.begin(), s.y.end()));
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : fig.series) {
+    lo = std::min(lo, *std::min_element(s.y.begin(), s.y.end()));
+    hi = std::max(hi, *std::max_element(s.y.begin(), s.y.end()));
+  }
+  // the three node rows below the curves, the key's seven lines above them
+  char range[96];
+  std::snprintf(range, sizeof range, "set yrange [%.6g:%.6g]", lo - 0.45, hi + std::max(0.9 * (hi - lo), 0.5));
+  fig.settings.push_back(range);
   const mortar::MergedGrid grid = mortar::merge_traces(r.trace1, r.trace2);
   fig.series.push_back(grid_row(r.trace1.x, lo - 0.15, "nodes xi^1 (side 1, non-mortar)", "pt 2 ps 1.5 lc rgb '#1f77b4'"));
   fig.series.push_back(grid_row(r.trace2.x, lo - 0.25, "nodes xi^2 (side 2, mortar)", "pt 2 ps 1.5 lc rgb '#888888'"));

@@ -181,8 +181,9 @@ void plot_errors(const std::string& folder, const Options& o, const mortar::Conv
   const bool has_point = std::find(columns.begin(), columns.end(), "err_contact_point") != columns.end();
   fig.ylabel = has_point ? "relative error [-] (contact point: [m])" : "relative error [-]";
   fig.log_x = fig.log_y = true;
-  fig.key = "outside right top";  // beside the data, never over it
-  fig.width = 1250;
+  fig.key = "top left";  // over the empty decades room_above_data makes, never over the data
+  fig.width = 1000;
+  fig.height = 700;
   const auto h = table.column("h");
   const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11"};
   int k = 0;
@@ -193,6 +194,7 @@ void plot_errors(const std::string& folder, const Options& o, const mortar::Conv
       fig.series.push_back({describe(name), h, e, "linespoints", std::string(markers[k++ % 4]) + " lw 2"});
     }
   // no reference slope here: no theorem bounds every one of these columns (see theorem_5_1.png)
+  mortar::room_above_data(fig, 2);
   mortar::write_figure(folder, "error_vs_h", fig, run);
 }
 

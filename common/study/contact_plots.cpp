@@ -223,8 +223,12 @@ void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise
   fig.title = "patch test, h_2/h_1 = 3/7: sigma_{22} in the triangles along Gamma_c (exact: -p)";
   fig.xlabel = "x of the triangle's centroid [m]";
   fig.ylabel = "sigma_{22} / p [-]";
-  fig.key = "outside right top";
-  fig.width = 1200;
+  // the key below in two columns (beside the plot it took 30% of the width); the margin keeps
+  // it clear of the axis label
+  fig.key = "outside below maxrows 2";
+  fig.settings.push_back("set bmargin 7");
+  fig.width = 1000;
+  fig.height = 700;
   fig.series.push_back(curve_series(pointwise.sigma22_body1, "pointwise matching, body 1", "linespoints", "pt 6 lc rgb '#d62728'"));
   fig.series.push_back(curve_series(pointwise.sigma22_body2, "pointwise matching, body 2", "linespoints", "pt 4 lc rgb '#ff7f0e'"));
   fig.series.push_back(curve_series(integral.sigma22_body1, integral_label + ", body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));
