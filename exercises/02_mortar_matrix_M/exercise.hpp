@@ -6,8 +6,10 @@
 
 namespace exercise {
 
-// P(j, k) = int_{Gamma_c} phi^1_j phi^2_k for the P1 hats of the sorted grids x1 and x2
-// (same end points). With psi = C phi^1 (exercise 3), the mortar matrix is M = C P.
+// P(j, k) = int phi^1_j phi^2_k for the P1 hats of the sorted grids x1 (rows) and x2 (columns),
+// integrated where both grids are: over [max(x1.front(), x2.front()), min(x1.back(), x2.back())],
+// the whole of Gamma_c when they share their end points, the zero matrix when they do not
+// overlap. With psi = C phi^1 (exercise 3), the mortar matrix is M = C P.
 Eigen::MatrixXd mixed_mass(const std::vector<double>& x1, const std::vector<double>& x2);
 
 }  // namespace exercise

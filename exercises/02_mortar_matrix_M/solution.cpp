@@ -14,15 +14,21 @@ int element_of(const std::vector<double>& x, double point) {
 }  // namespace
 
 Eigen::MatrixXd mixed_mass(const std::vector<double>& x1, const std::vector<double>& x2) {
-  std::vector<double> breaks(x1);
-  breaks.insert(breaks.end(), x2.begin(), x2.end());
-  std::sort(breaks.begin(), breaks.end());
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(x1.size()),
                                             static_cast<Eigen::Index>(x2.size()));
+  // where both grids are: the products vanish elsewhere, one factor being undefined there
+  const double lo = std::max(x1.front(), x2.front()), hi = std::min(x1.back(), x2.back());
+  if (!(hi > lo)) return P;
+  // the breakpoints of both grids inside [lo, hi], and its ends
+  std::vector<double> breaks = {lo, hi};
+  for (const auto* x : {&x1, &x2})
+    for (double p : *x)
+      if (p > lo && p < hi) breaks.push_back(p);
+  std::sort(breaks.begin(), breaks.end());
   const double g = 0.5 / std::sqrt(3.0);  // 2-point Gauss on [0, 1]: 1/2 -+ g, weights 1/2
   for (std::size_t s = 0; s + 1 < breaks.size(); ++s) {
     const double a = breaks[s], b = breaks[s + 1];
-    if (b - a <= 1e-12 * (x1.back() - x1.front())) continue;  // a merged pair: no segment
+    if (b - a <= 1e-12 * (hi - lo)) continue;  // a merged pair: no segment
     const int e1 = element_of(x1, 0.5 * (a + b)), e2 = element_of(x2, 0.5 * (a + b));
     for (double t : {0.5 - g, 0.5 + g}) {
       const double x = a + t * (b - a), w = 0.5 * (b - a);

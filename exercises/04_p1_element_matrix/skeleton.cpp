@@ -3,8 +3,9 @@
 namespace exercise {
 
 Eigen::Matrix<double, 6, 6> element_stiffness(const std::array<Eigen::Vector2d, 3>& x, double E, double nu) {
-  // Your code here: the gradients of the barycentric coordinates, the strain matrix B (3 x 6),
-  // the plane-strain matrix C (3 x 3), then area * B^T C B.
+  // Your code here: refuse what the header says; then the matrix of a(u, v) on this triangle in
+  // its six nodal unknowns, whichever way round the vertices are listed (README, "What to work
+  // out").
   (void)x;
   (void)E;
   (void)nu;

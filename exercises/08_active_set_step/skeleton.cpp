@@ -12,7 +12,7 @@ std::vector<int> next_active_set(const Eigen::VectorXd& lambda, const Eigen::Vec
 
 Eigen::VectorXd solve_on_active_set(const Eigen::MatrixXd& S, const Eigen::VectorXd& b,
                                     const std::vector<int>& active) {
-  // Your code here: gather S_AA and b_A, solve, scatter back.
+  // Your code here: README, "What to work out", question 3.
   (void)S;
   (void)active;
   return Eigen::VectorXd::Zero(b.size());

@@ -3,6 +3,7 @@
 namespace exercise {
 
 std::vector<int> next_active_set(const Eigen::VectorXd& lambda, const Eigen::VectorXd& gap, double c) {
+  // the right side of max(0, lambda_i - c gap_i) wins where it is positive
   std::vector<int> active;
   for (Eigen::Index i = 0; i < lambda.size(); ++i)
     if (lambda[i] - c * gap[i] > 0) active.push_back(static_cast<int>(i));
@@ -11,6 +12,9 @@ std::vector<int> next_active_set(const Eigen::VectorXd& lambda, const Eigen::Vec
 
 Eigen::VectorXd solve_on_active_set(const Eigen::MatrixXd& S, const Eigen::VectorXd& b,
                                     const std::vector<int>& active) {
+  // On A the equation is lambda_i = lambda_i - c gap_i, so gap_i = (S lambda - b)_i = 0; off A it
+  // is lambda_i = 0. So S_AA lambda_A = b_A: a block of S, symmetric positive definite when the
+  // rows of B are independent.
   const int a = static_cast<int>(active.size());
   Eigen::MatrixXd S_AA(a, a);
   Eigen::VectorXd b_A(a);

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "exercise.hpp"
 #include "small_contact_problem.hpp"
 
@@ -8,6 +10,24 @@ TEST(ActiveSetStep, predicts_contact_from_multipliers_and_gaps) {
   // row 0: pressed; row 1: penetrates; row 2: open; row 3: small force, large gap
   EXPECT_EQ(exercise::next_active_set(lambda, gap, 1.0), (std::vector<int>{0, 1}));
   EXPECT_EQ(exercise::next_active_set(lambda, gap, 0.01), (std::vector<int>{0, 1, 3}));
+}
+
+// Worked by hand (and checked in exact rational arithmetic): S = (2 1 0; 1 2 1; 0 1 2), b = (1, 1, 1).
+// A = {0, 2}: S_AA = 2 I, so lambda = (1/2, 0, 1/2). A = {0, 1}: (2 1; 1 2) lambda_A = (1, 1) gives
+// lambda_A = (1/3, 1/3), row 2 carries nothing. A = {1}: 2 lambda_1 = 1. A = {}: no row carries a force.
+TEST(ActiveSetStep, solves_four_active_sets_worked_by_hand) {
+  const Eigen::Matrix3d S = (Eigen::Matrix3d() << 2, 1, 0, 1, 2, 1, 0, 1, 2).finished();
+  const Eigen::Vector3d b(1, 1, 1);
+  const struct {
+    std::vector<int> active;
+    Eigen::Vector3d lambda;
+  } cases[] = {{{0, 2}, {0.5, 0.0, 0.5}}, {{0, 1}, {1.0 / 3, 1.0 / 3, 0.0}}, {{1}, {0.0, 0.5, 0.0}}, {{}, {0.0, 0.0, 0.0}}};
+  for (const auto& c : cases) {
+    const Eigen::VectorXd lambda = exercise::solve_on_active_set(S, b, c.active);
+    ASSERT_EQ(lambda.size(), 3);
+    EXPECT_LT((lambda - c.lambda).cwiseAbs().maxCoeff(), 1e-14) << "active set of " << c.active.size()
+                                                                 << " rows: got " << lambda.transpose();
+  }
 }
 
 TEST(ActiveSetStep, your_steps_find_the_contact_solution) {

@@ -50,6 +50,23 @@ TEST(FrictionNewtonStep, one_step_is_newtons_step_in_each_status) {
   }
 }
 
+// Worked by hand, A = (4 0.5; 0.5 3), F = 0.3, c_n = 4, c_t = 3 (and checked with a Newton step
+// from central differences in a separate script). Both first steps keep w_n = 0, since C_n = -4 w_n.
+//  - Slipping, r = (1, 1), v = 0: lambda = (1, 1), s = 0.3, z = 1 > s. C = (0, |z| lambda_t - s z) =
+//    (0, 0.7). With d lambda / dv = -A: dz/dv = (-0.5, 0), ds/dv = F (-A(0, :) + (c_n, 0)) = (0, -0.15),
+//    dC_t/dv = sign(z) lambda_t dz/dv - |z| A(1, :) - z ds/dv - s dz/dv = (-0.85, -2.85), J = (-4 0; -0.85 -2.85),
+//    so v+ = (0, 0.7 / 2.85). With s held constant it would be (0, 0.7 / 3).
+//  - Stuck, r = (1, 0.1), v = (0, 0.02): lambda = (0.99, 0.04), s = 0.297, z = 0.1 < s. On the stick
+//    side C_t = -s c_t w_t with s = F (r_n - A(0, 1) w_t), so C_t = -0.9 w_t (1 - 0.5 w_t) along w_n = 0,
+//    dC_t/dw_t = -0.9 (1 - w_t) = -0.882, and w_t+ = w_t - C_t / C_t' = -0.5 w_t^2 / (1 - w_t) = -1/4900.
+//    With s held constant it would be exactly 0.
+TEST(FrictionNewtonStep, two_first_steps_worked_by_hand) {
+  const Eigen::Vector2d slipping = exercise::newton_step(A, Eigen::Vector2d(1.0, 1.0), 0.3, Eigen::Vector2d(0.0, 0.0));
+  EXPECT_LT((slipping - Eigen::Vector2d(0.0, 0.7 / 2.85)).norm(), 1e-14) << "slipping: got " << slipping.transpose();
+  const Eigen::Vector2d stuck = exercise::newton_step(A, Eigen::Vector2d(1.0, 0.1), 0.3, Eigen::Vector2d(0.0, 0.02));
+  EXPECT_LT((stuck - Eigen::Vector2d(0.0, -1.0 / 4900)).norm(), 1e-14) << "stuck: got " << stuck.transpose();
+}
+
 TEST(FrictionNewtonStep, your_steps_solve_the_node_in_each_case) {
   // stick, slip (w_t = 0.7 / 2.85 from 1 - 3 w_t = 0.3 (1 - 0.5 w_t)) and open, from v = 0
   struct Case {

@@ -9,8 +9,7 @@ Eigen::MatrixXd rigid_body_modes(const std::vector<std::array<double, 2>>& nodes
 }
 
 Eigen::MatrixXd modes_in_condensed_unknowns(const Eigen::SparseMatrix<double>& T, const Eigen::MatrixXd& N) {
-  // Your code here: solve T V = N. T is sparse and the identity outside a few rows: a sparse
-  // LU will do, and so will a thought about which entries of V can differ from N.
+  // Your code here: V with T V = N.
   (void)T;
   return N;
 }

@@ -86,3 +86,39 @@ TEST(NearNullSpace, condensed_modes_are_the_rigid_motions_seen_through_T) {
   EXPECT_NEAR(V(3, 1), 1.0 + 0.5 * 0 - 0.25 * 0, 1e-14);
   EXPECT_NEAR(V(0, 0), 1.0, 1e-14);
 }
+
+// The README's question, worked by hand. Three nodes on the contact line, node 1 at (0.5, 0) on
+// body 1, nodes 0 at (0, 0) and 2 at (1, 0) on body 2; the pivot is node 1's normal dof (row 3),
+// and its row u_3 = v_3 + 0.6 v_1 + 0.4 v_5 couples the normal (y) dofs only. Its weights sum to
+// one: -B_ik / b_i = 0.6, 0.4, i.e. sum_k B_ik = -b_i, the row reproduces constants. Then
+// v_3 = u_3 - 0.6 u_1 - 0.4 u_5 (the gap the motion opens), every other v_k = u_k:
+//   x-translation:     0 - 0.6 * 0 - 0.4 * 0     = 0
+//   y-translation:     1 - 0.6 * 1 - 0.4 * 1     = 0    (both bodies together: no gap)
+//   rotation (-y, x):  0.5 - 0.6 * 0 - 0.4 * 1   = 0.1  (the row does not reproduce x)
+//   body 1 up alone:   1 - 0.6 * 0 - 0.4 * 0     = 1
+TEST(NearNullSpace, a_translation_of_both_bodies_opens_no_gap_at_a_pivot) {
+  Eigen::SparseMatrix<double> T(6, 6);
+  std::vector<Eigen::Triplet<double>> entries = {{3, 1, 0.6}, {3, 5, 0.4}};
+  for (int k = 0; k < 6; ++k) entries.push_back({k, k, 1.0});
+  T.setFromTriplets(entries.begin(), entries.end());
+  const double x[3] = {0.0, 0.5, 1.0};  // the nodes' abscissae, all at y = 0
+  Eigen::MatrixXd N = Eigen::MatrixXd::Zero(6, 4);
+  for (int k = 0; k < 3; ++k) {
+    N(2 * k, 0) = 1;         // x-translation
+    N(2 * k + 1, 1) = 1;     // y-translation
+    N(2 * k + 1, 2) = x[k];  // rotation (-y, x): its x part -y vanishes on this line
+  }
+  N(3, 3) = 1;  // node 1 (body 1) moves up, body 2 stays
+  const Eigen::MatrixXd V = modes_in_condensed_unknowns(T, N);
+  ASSERT_EQ(V.rows(), 6);
+  ASSERT_EQ(V.cols(), 4);
+  const double pivot[4] = {0.0, 0.0, 0.1, 1.0};
+  const char* motion[4] = {"x-translation", "y-translation", "rotation", "body 1 alone"};
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_NEAR(V(3, c), pivot[c], 1e-14) << motion[c] << ": the pivot row of V";
+    for (int r = 0; r < 6; ++r) {
+      if (r == 3) continue;
+      EXPECT_NEAR(V(r, c), N(r, c), 1e-14) << motion[c] << ": row " << r << " is no pivot";
+    }
+  }
+}
