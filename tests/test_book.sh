@@ -75,6 +75,9 @@ for note in "$source_dir"/README.md "$source_dir"/chapters/0[0-9]_*/README.md "$
             "$source_dir"/exercises/[0-9][0-9]_*/README.md; do
   glued=$(awk '/^```/ {code = !code} !code && FNR > 1 && prev != "" && /^#+ / {print FILENAME ":" FNR ": " $0} {prev = $0}' "$note")
   [ -z "$glued" ] || { printf '%s\n' "$glued"; fail "a heading with no blank line before it"; }
+  # an equation number "(8)" that begins an indented line of a list item starts a nested list
+  numbered=$(awk '/^```/ {code = !code} !code && /^[[:space:]]+\([0-9]+\) / {print FILENAME ":" FNR ": " $0}' "$note")
+  [ -z "$numbered" ] || { printf '%s\n' "$numbered"; fail "an equation number at the start of a list item's line (pandoc reads a list)"; }
 done
 pages=$(pdfinfo "$pdf" | sed -n 's/^Pages: *//p')
 echo "course.pdf: $pages pages, course.html: $(du -k "$html" | cut -f1) kB"
