@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 #include <vector>
@@ -323,5 +325,58 @@ TEST(P2Interface, jump_and_pressure_on_two_p2_bodies) {
     }
     const InterfaceCurve pp = contact_pressure(gamma, cp, force);
     for (int j = 0; j < t.num_dofs(); ++j) EXPECT_NEAR(pp.value[j], p(pp.x[j]), 1e-13) << "node " << j;
+  }
+}
+
+// Where the L2 projection onto M_h^1 (q = 2) loses its order, on chapter 4's pressure
+// p = 1.5 + cos(3 pi x / 2) and uniform traces of 12 to 768 elements (chapter 7's notes, "The
+// pressure"). Its error is measured on parts of Gamma_c: all but the two P1 end elements
+// (h^{5/2}: the end defect reaches inward, decaying element by element), the middle half (h^3,
+// what P2 can do), and, for comparison, the projection onto all of P2 (h^3 without the end
+// elements). The rates are printed as the notes' table, and the finest errors pinned.
+TEST(P2Interface, the_projection_onto_m_h_loses_half_an_order_near_the_ends_only) {
+  const Fn p = [](double x) { return 1.5 + std::cos(1.5 * M_PI * x); };
+  const SegmentRule g = gauss_legendre(6);
+  // the L2 error of a curve of nodal values on the elements [first, last) of t
+  const auto error_on = [&](const InterfaceTrace& t, const std::vector<double>& v, int first, int last) {
+    double sum = 0;
+    for (int e = first; e < last; ++e) {
+      const double a = t.x[e], h = t.x[e + 1] - t.x[e];
+      for (std::size_t k = 0; k < g.points.size(); ++k) {
+        const double x = a + h * g.points[k], d = p(x) - t.evaluate(v, x);
+        sum += g.weights[k] * h * d * d;
+      }
+    }
+    return std::sqrt(sum);
+  };
+  const char* parts[] = {"M_h^1, all but the end elements", "M_h^1, all but three elements at each end",
+                         "M_h^1, the middle half [L/4, 3L/4]", "all of P2, all but the end elements"};
+  std::vector<std::array<double, 4>> errors;
+  for (int n = 12; n <= 768; n *= 2) {
+    ContactInterface gamma;
+    gamma.nonmortar_trace = uniform_trace(1.0, n, 0.0, 1, 2);
+    gamma.space = end_modified_p2(gamma.nonmortar_trace);
+    const std::vector<double> m_h = l2_projection(gamma, p).value;
+    gamma.space.C = RowMajorMatrix(gamma.nonmortar_trace.num_dofs(), gamma.nonmortar_trace.num_dofs());
+    gamma.space.C.setIdentity();
+    const std::vector<double> p2 = l2_projection(gamma, p).value;
+    const InterfaceTrace& t = gamma.nonmortar_trace;
+    errors.push_back({error_on(t, m_h, 1, n - 1), error_on(t, m_h, 3, n - 3), error_on(t, m_h, n / 4, 3 * n / 4),
+                      error_on(t, p2, 1, n - 1)});
+  }
+  for (int part = 0; part < 4; ++part) {
+    std::printf("%-45s", parts[part]);
+    std::vector<double> rates;
+    for (std::size_t l = 1; l < errors.size(); ++l) rates.push_back(std::log2(errors[l - 1][part] / errors[l][part]));
+    for (double r : rates) std::printf(" %.2f", r);
+    std::printf("   (finest: %.3e)\n", errors.back()[part]);
+    // over the last three steps: 5/2, 3 and 3 settled; three elements from the ends, between
+    // the two and drifting back towards 5/2 as the layer of fixed element count shrinks
+    const double rate = part == 0 ? 2.5 : part == 1 ? 2.85 : 3.0;
+    for (std::size_t k = rates.size() - 3; k < rates.size(); ++k)
+      EXPECT_NEAR(rates[k], rate, part == 1 ? 0.1 : 0.02) << parts[part] << ", step " << k + 1;
+    // and the finest errors, 768 elements (a rate is blind to a constant factor)
+    const double finest[] = {2.643e-08, 1.216e-09, 6.642e-10, 9.379e-10};
+    EXPECT_NEAR(errors.back()[part], finest[part], 1e-3 * finest[part]) << parts[part];
   }
 }

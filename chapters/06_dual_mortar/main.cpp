@@ -120,7 +120,6 @@ int main(int argc, char** argv) {
     std::printf("dual basis: rates (three finest levels): energy %.3f (Theorem 4.2 with M_h dual: 1), L2 %.3f, "
                 "pressure L2 %.3f, H^{-1/2}_h %.3f\n",
                 rates.at("err_energy"), rates.at("err_l2"), rates.at("err_pressure"), rates.at("err_pressure_hminus"));
-    dual.table.local_rates().write_csv(o.out + "/local_rates.csv", true);
     std::printf("dual basis, ");
     dual.table.print_local_rates();
     std::printf("D off its diagonal: max |D_ij| / D_ii = %.2e; patch test max |sigma_22 + p| / p = %.2e\n", offdiagonal,

@@ -87,7 +87,6 @@ int main(int argc, char** argv) {
 
     // 5. What the theorems say, next to what we see.
     mortar::write_bilateral_outputs(o, parser, study, extra);
-    study.table.local_rates().write_csv(o.out + "/local_rates.csv", true);
     const auto rates = study.rates();
     const mortar::BilateralLevel& finest = *study.finest;
     std::printf("rates (three finest levels): energy %.3f (%s), L2 %.3f, jump %.3f\n", rates.at("err_energy"),

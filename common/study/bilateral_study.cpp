@@ -372,6 +372,7 @@ void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser&
   add_timing(results, f.timing);
   results.merge(extra);
   study.table.write_csv(o.out + "/convergence.csv");
+  study.table.local_rates().write_csv(o.out + "/local_rates.csv", true);  // level to level
   write_summary(o.out + "/summary.json", parser, study.rates(), results);
   if (o.profile) report_profile(f.timing, o.out);
 }

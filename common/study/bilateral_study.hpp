@@ -150,8 +150,9 @@ struct BilateralStudy {
 BilateralStudy run_bilateral_study(const BilateralStudyOptions& o, const ManufacturedContact& exact,
                                    const BilateralMethod& method);
 
-// convergence.csv and summary.json; results hold the finest level, the patch test of this
-// chapter's matching (patch_test_rel_error) and of the other one.
+// convergence.csv, its level-to-level rates local_rates.csv, and summary.json; results hold the
+// finest level, the patch test of this chapter's matching (patch_test_rel_error) and of the
+// other one.
 // `extra` adds a chapter's own keys to results.
 void write_bilateral_outputs(const BilateralStudyOptions& o, const OptionParser& parser, const BilateralStudy& study,
                              const JsonObject& extra = {});
