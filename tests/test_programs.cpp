@@ -754,6 +754,24 @@ TEST(Programs, ch07_p2_rates_and_patch_tests) {
   EXPECT_GT(summary_value(dir, "results", "patch_test_rel_error"), 1e-4);
 }
 
+// The pressure on the middle half of Gamma_c (chapter 7's notes, "The pressure"), default run:
+// away from the P1 end elements the best approximation in M_h^1 reaches h^3, while lambda_h and
+// its element means stay at h^2, a full order below (last local rates: 3.00, 2.00, 2.00), and
+// the finest values, 192 non-mortar elements.
+TEST(Programs, ch07_pressure_is_an_order_below_its_best_approximation_in_the_middle) {
+  const std::string dir = out_dir("ch07_middle");
+  const ProgramRun r = run(std::string(CH07) + " --no-plot --no-p1 --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto last_rate = [&](const std::string& column) { return csv_column(dir + "/local_rates.csv", column).back(); };
+  EXPECT_NEAR(last_rate("err_pressure_middle"), 2.0, 0.03);
+  EXPECT_NEAR(last_rate("err_pressure_best_middle"), 3.0, 0.03);
+  EXPECT_NEAR(last_rate("err_pressure_means_middle"), 2.0, 0.03);
+  const auto finest = [&](const std::string& column) { return csv_column(dir + "/convergence.csv", column).back(); };
+  EXPECT_NEAR(finest("err_pressure_middle"), 2.246e-05, 1e-2 * 2.246e-05);
+  EXPECT_NEAR(finest("err_pressure_best_middle"), 2.924e-08, 1e-2 * 2.924e-08);
+  EXPECT_NEAR(finest("err_pressure_means_middle"), 4.888e-06, 1e-2 * 4.888e-06);
+}
+
 // P2 beside P1 with the same unknowns (p1.csv): P2's energy error is below P1's at every level
 // from the second on, and it reaches P1's finest error with fewer unknowns.
 TEST(Programs, ch07_p2_beats_p1_at_equal_unknowns) {

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "figures.hpp"
+#include "middle_half.hpp"
 #include "level.hpp"
 #include "p1_comparison.hpp"
 #include "common/study/bilateral_study.hpp"
@@ -69,7 +70,8 @@ int main(int argc, char** argv) {
     const bool integral = matching == mortar::Matching::integral;
 
     // 3. P2 levels, each solved by the steps of level.cpp, then the patch test (h2/h1 = 3/7).
-    const mortar::BilateralStudy study = mortar::run_bilateral_study(o, exact, {matching, chapter07::solve_quadratic, {}});
+    const mortar::BilateralStudy study =
+        mortar::run_bilateral_study(o, exact, {matching, chapter07::solve_quadratic, chapter07::add_middle_half_errors});
     study.table.print_local_rates();
 
     // 4. P1 on the same scene with the same unknowns.
