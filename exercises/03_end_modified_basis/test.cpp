@@ -32,6 +32,21 @@ std::string name(int N, Ends ends) {
   return "N = " + std::to_string(N) + ", constant first element " + (ends.first ? "yes" : "no") + ", last " +
          (ends.last ? "yes" : "no");
 }
+
+// check(N, ends, C, nodes) for every element count and choice of ends, once C has one row per
+// free nodal value and one column per node
+template <class Check>
+void for_every_case(const Check& check) {
+  for (int N : element_counts)
+    for (Ends ends : end_cases) {
+      const Eigen::MatrixXd C = exercise::end_modified_basis(N, ends.first, ends.last);
+      const std::vector<int> nodes = kept_nodes(N, ends);
+      const bool shaped = C.rows() == static_cast<int>(nodes.size()) && C.cols() == N + 1;
+      EXPECT_TRUE(shaped) << name(N, ends) << ": C is " << C.rows() << " x " << C.cols() << ", expected "
+                          << nodes.size() << " x " << N + 1;
+      if (shaped) check(N, ends, C, nodes);
+    }
+}
 }  // namespace
 
 // Both ends constant is the paper's M_h^1, which the library builds (for N = 1 too).
@@ -87,16 +102,11 @@ TEST(EndModifiedBasis, is_constant_on_the_constant_end_elements) {
 
 TEST(EndModifiedBasis, is_the_nodal_basis_of_the_free_nodes) {
   // row r is 1 at its own free node and 0 at every other free node
-  for (int N : element_counts)
-    for (Ends ends : end_cases) {
-      const Eigen::MatrixXd C = exercise::end_modified_basis(N, ends.first, ends.last);
-      const std::vector<int> nodes = kept_nodes(N, ends);
-      ASSERT_EQ(C.rows(), static_cast<int>(nodes.size())) << name(N, ends);
-      ASSERT_EQ(C.cols(), N + 1) << name(N, ends);
-      for (int r = 0; r < C.rows(); ++r)
-        for (int k = 0; k < C.rows(); ++k)
-          EXPECT_EQ(C(r, nodes[k]), r == k ? 1.0 : 0.0) << name(N, ends) << ": psi_" << r << " at node " << nodes[k];
-    }
+  for_every_case([](int N, Ends ends, const Eigen::MatrixXd& C, const std::vector<int>& nodes) {
+    for (int r = 0; r < C.rows(); ++r)
+      for (int k = 0; k < C.rows(); ++k)
+        EXPECT_EQ(C(r, nodes[k]), r == k ? 1.0 : 0.0) << name(N, ends) << ": psi_" << r << " at node " << nodes[k];
+  });
 }
 
 TEST(EndModifiedBasis, spans_every_continuous_p1_function_constant_on_the_constant_end_elements) {
@@ -104,20 +114,15 @@ TEST(EndModifiedBasis, spans_every_continuous_p1_function_constant_on_the_consta
   // v = sum_r v(free node r) psi_r at every node
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> value(-1.0, 1.0);
-  for (int N : element_counts)
-    for (Ends ends : end_cases) {
-      const Eigen::MatrixXd C = exercise::end_modified_basis(N, ends.first, ends.last);
-      const std::vector<int> nodes = kept_nodes(N, ends);
-      ASSERT_EQ(C.rows(), static_cast<int>(nodes.size())) << name(N, ends);
-      ASSERT_EQ(C.cols(), N + 1) << name(N, ends);
-      Eigen::VectorXd v(N + 1);
-      for (int j = 0; j <= N; ++j) v[j] = value(rng);
-      if (ends.first) v[0] = v[1];
-      if (ends.last) v[N] = v[N - 1];
-      Eigen::VectorXd lambda(C.rows());
-      for (int r = 0; r < C.rows(); ++r) lambda[r] = v[nodes[r]];
-      EXPECT_LT((C.transpose() * lambda - v).cwiseAbs().maxCoeff(), 1e-15) << name(N, ends);
-    }
+  for_every_case([&](int N, Ends ends, const Eigen::MatrixXd& C, const std::vector<int>& nodes) {
+    Eigen::VectorXd v(N + 1);
+    for (int j = 0; j <= N; ++j) v[j] = value(rng);
+    if (ends.first) v[0] = v[1];
+    if (ends.last) v[N] = v[N - 1];
+    Eigen::VectorXd lambda(C.rows());
+    for (int r = 0; r < C.rows(); ++r) lambda[r] = v[nodes[r]];
+    EXPECT_LT((C.transpose() * lambda - v).cwiseAbs().maxCoeff(), 1e-15) << name(N, ends);
+  });
 }
 
 // Worked by hand from the space's conditions (the library has no one-sided basis). N = 3, first
