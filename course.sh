@@ -5,7 +5,8 @@
 #   bash course.sh run 6  the same for one chapter (6, 06, ch06, ch06_dual_mortar or dual_mortar):
 #                         builds its program alone, refreshes figures/ch06_dual_mortar/ only
 #   bash course.sh test   install what is missing, build, run the test suite
-#   bash course.sh book   install what is missing, write the course book to book/course.html and book/course.pdf
+#   bash course.sh book   install what is missing, write the course book in two editions: book/lessons.{html,pdf}
+#                         and book/complete.{html,pdf} (with the evidence); their page counts go into README.md
 #
 # Each step prints one line; its output goes to build/logs/COMMAND/NN_step.log, shown (the last
 # 60 lines) only when the step fails. The time of every step, and the total, close the run.
@@ -240,8 +241,12 @@ build_fallback() {
 }
 
 make_book() {
-  step "writing the course book" bash book/build.sh book
-  echo "book: book/course.html, book/course.pdf"
+  step "writing the course book, both editions" bash book/build.sh book
+  # the README gives the page counts of this build, never typed ones (tests/test_book.sh)
+  local counts
+  counts="lessons $(sed -n 's/^lessons //p' book/pages.txt) pages, complete $(sed -n 's/^complete //p' book/pages.txt) pages"
+  sed -i "s|<!-- book pages -->[^<]*<!-- /book pages -->|<!-- book pages -->$counts<!-- /book pages -->|" README.md
+  echo "book: book/lessons.html and book/lessons.pdf (the lessons), book/complete.html and book/complete.pdf (with the evidence): $counts"
 }
 
 case "${1:-}" in

@@ -9,8 +9,9 @@
 --     an image whose file does not exist becomes a line of text naming it;
 --   * every heading id gets the note's key as prefix, and the note's first heading is the
 --     key itself, so "chapters/04_integral_matching/README.md#hard-cases" becomes the in-book
---     anchor "#chapters-04_integral_matching--hard-cases";
---   * a link to a file that is not in the book (source code, DESIGN.md) keeps its text only.
+--     anchor "#chapters-04_integral_matching--hard-cases" (an EVIDENCE.md's key ends in "-evidence");
+--   * a link to a file that is not in the book (source code; the evidence pages in the lessons'
+--     edition) keeps its text only.
 --
 -- Second pass, on the whole book (output format latex): a figure also written as PDF is
 -- included as the PDF (vector), otherwise as the PNG.
@@ -41,13 +42,17 @@ local function directory_of(path)
   return path:match("^(.*)/[^/]*$") or ""
 end
 
--- the anchor of a whole note: "chapters/04_integral_matching/README.md" -> "chapters-04_integral_matching"
+-- the anchor of a whole note: "chapters/04_integral_matching/README.md" -> "chapters-04_integral_matching",
+-- its evidence "chapters/04_integral_matching/EVIDENCE.md" -> "chapters-04_integral_matching-evidence",
+-- a page of docs/ "docs/speed.md" -> "docs-speed"
 local function key_of(path)
   local folder = directory_of(path)
-  if folder == "" then
-    return "introduction"
+  local name = path:match("([^/]*)$"):gsub("%.md$", "")
+  local base = folder == "" and "introduction" or (folder:gsub("/", "-"))
+  if name == "README" then
+    return base
   end
-  return (folder:gsub("/", "-"))
+  return (folder == "" and "" or base .. "-") .. name:lower()
 end
 
 local function is_external(target)

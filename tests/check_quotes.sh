@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Code quoted in the notes is the code that runs. Every ```cpp block of a chapter's notes is
-# preceded by a marker naming the file it comes from,
+# Code quoted in the notes is the code that runs. Every ```cpp block of a chapter's lesson or
+# evidence page is preceded by a marker naming the file it comes from,
 #
 #   <!-- quote: common/contact/dual_condensation.cpp -->
 #
@@ -18,7 +18,8 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # One line of code as compared: its // comment cut off, all blank space removed.
 squeeze='{ sub(/\/\/.*/, ""); gsub(/[ \t\r]/, ""); print }'
-for note in "$source_dir"/chapters/0[0-9]_*/README.md; do
+for note in "$source_dir"/chapters/0[0-9]_*/README.md "$source_dir"/chapters/0[0-9]_*/EVIDENCE.md; do
+  [ -f "$note" ] || continue
   # each block as "LINE<TAB>FILE" (FILE empty when the marker is missing)
   while IFS=$'\t' read -r line file; do
     blocks=$((blocks + 1))
