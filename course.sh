@@ -8,8 +8,9 @@
 #   bash course.sh book   install what is missing, write the course book in two editions: book/lessons.{html,pdf}
 #                         and book/complete.{html,pdf} (with the evidence); their page counts go into README.md
 #
-# Each step prints one line; its output goes to build/logs/COMMAND/NN_step.log, shown (the last
-# 60 lines) only when the step fails. The time of every step, and the total, close the run.
+# Each step prints one line; its output goes to build/logs/COMMAND/NN_step.log (one chapter's run:
+# build/logs/run/PROGRAM/NN_step.log, kept when another chapter runs), shown (the last 60 lines)
+# only when the step fails. The time of every step, and the total, close the run.
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -256,6 +257,8 @@ case "${1:-}" in
         echo "course.sh: no chapter '$2' (a number 1-9, ch06, ch06_dual_mortar or dual_mortar)" >&2
         exit 2
       }
+      # a chapter's logs of its own, so that running another chapter keeps them
+      logs=build/logs/run/$program
       install_missing "${packages[@]}" "${petsc_packages[@]}"
       run_one_chapter "$program"
     else

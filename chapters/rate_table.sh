@@ -1,23 +1,25 @@
 #!/usr/bin/env bash
-# A local-rate table of the notes, remade from its runs: one run of PROGRAM for each mesh ratio
-# h2/h1 in RATIOS, with the OPTIONs given, then for each ratio and each column of COLUMNS the
-# rates between levels k-1 and k (the run's local_rates.csv) and the finest level's value
-# (convergence.csv). The notes give, under each such table, the line that makes it.
+# A local-rate table of the evidence pages, remade from its runs: one run of PROGRAM for each
+# mesh ratio h2/h1 in RATIOS, with the OPTIONs given, then for each ratio and each column of
+# COLUMNS the rates between levels k-1 and k (the run's local_rates.csv) and the finest level's
+# value (convergence.csv), as a Markdown table on stdout. The evidence pages hold its output
+# between "<!-- table: ... -->" markers (chapters/evidence_tables.sh remakes and checks them).
 #
 #   bash chapters/rate_table.sh PROGRAM 'RATIOS' 'COLUMNS' [OPTION...]
 #   bash chapters/rate_table.sh ch03_pointwise_matching '3/2 3' 'err_energy err_jump' --n0 6 --levels 7
 #
 # BUILD (default: build) holds the programs; the runs and their logs go to OUT (default:
-# results/PROGRAM_rates/ratio_R).
+# results/PROGRAM_rates/ratio_R), named on stderr.
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n '2,11p' "$0" >&2; exit 2; }
+[ $# -ge 3 ] || { sed -n '2,12p' "$0" >&2; exit 2; }
 program=$1 ratios=$2 columns=$3
 shift 3
 build=${BUILD:-build}
 out=${OUT:-results/${program}_rates}
 [ -x "$build/$program" ] || { echo "rate_table.sh: no $build/$program (cmake --build $build --target $program)" >&2; exit 2; }
 mkdir -p "$out"
-printf '%-6s %-28s %s\n' "h2/h1" "column" "local rates, levels 0-1, 1-2, ..."
+echo "| $(echo "h2/h1") | column | local rates, levels 0-1, 1-2, ... | finest level |"
+echo "|---|---|---|---|"
 for ratio in $ratios; do
   folder=$out/ratio_${ratio/\//_}
   "$build/$program" "$@" --no-plot --h-ratio "$ratio" --out "$folder" > "$folder.log" 2>&1 ||
@@ -28,7 +30,7 @@ for ratio in $ratios; do
     [ -n "$rates" ] || { echo "rate_table.sh: no column $column in $folder/local_rates.csv" >&2; exit 2; }
     finest=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
                                         col { v = $col } END { printf "%.3g", v }' "$folder/convergence.csv")
-    printf '%-6s %-28s %s   (finest level: %s)\n' "$ratio" "$column" "$rates" "$finest"
+    echo "| $ratio | \`$column\` | $rates | $finest |"
   done
 done
-echo "runs and logs in $out/"
+echo "rate_table.sh: runs and logs in $out/" >&2
