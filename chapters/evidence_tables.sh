@@ -13,12 +13,13 @@
 #   bash chapters/evidence_tables.sh list PAGE...    the commands only
 #
 # One chapter's default-size tables: bash chapters/evidence_tables.sh check chapters/04_integral_matching/EVIDENCE.md
-# (minutes: the runs are the evidence's). tests/evidence_quick.md holds the same tables at the
-# programs' --quick sizes; the test suite checks it.
+# (minutes: the runs are the evidence's). tests/evidence_quick.md holds such tables at the
+# programs' --quick sizes; the test suite checks it. RUNS=DIR keeps each table's runs in
+# DIR/PAGE_tableK (rate_table.sh's OUT).
 set -euo pipefail
 mode=${1:-}
 shift || true
-case "$mode" in check | update | list) ;; *) sed -n '2,17p' "$0" >&2; exit 2 ;; esac
+case "$mode" in check | update | list) ;; *) sed -n '2,19p' "$0" >&2; exit 2 ;; esac
 [ $# -ge 1 ] || { echo "evidence_tables.sh: no page given" >&2; exit 2; }
 cd "$(dirname "$0")/.."
 drifted=0
@@ -38,6 +39,8 @@ for page in "$@"; do
     cmd=$(cat "$scratch/cmd$k")
     if [ "$mode" = list ]; then echo "$page: $cmd"; continue; fi
     echo "$page: table $k of $count: $cmd" >&2
+    # RUNS, when set, keeps each table's runs in a folder of their own (rate_table.sh's OUT)
+    if [ -n "${RUNS:-}" ]; then export OUT=$RUNS/$(basename "$page" .md)_table$k; fi
     bash -c "$cmd" > "$scratch/new$k" 2> "$scratch/log$k" || { cat "$scratch/log$k" >&2; echo "evidence_tables.sh: the command failed" >&2; exit 1; }
     touch "$scratch/old$k"
     if ! diff -u "$scratch/old$k" "$scratch/new$k" > "$scratch/diff$k"; then

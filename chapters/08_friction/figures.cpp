@@ -6,6 +6,7 @@
 
 #include "common/study/contact_plots.hpp"
 #include "common/study/plot.hpp"
+#include "common/study/two_body_pictures.hpp"
 
 namespace chapter08 {
 
@@ -28,6 +29,14 @@ mortar::Series sampled(const std::function<double(double)>& f, double a, double 
   return s;
 }
 }  // namespace
+
+void plot_meshes(const std::string& folder, const FrictionalLevel& coarsest, const Options& o, bool run) {
+  // the dual multipliers live on the nodes xi^1 of the non-mortar trace, glued by integral matching
+  mortar::write_figure(folder, "meshes",
+                       mortar::two_body_meshes(coarsest.bodies, coarsest.gamma, mortar::Matching::integral,
+                                               "the two bodies, coarsest level: " + scene_title(o)),
+                       run);
+}
 
 void plot_zones(const std::string& folder, const FrictionalLevel& r, const Options& o, const ExactCurves& exact,
                 bool run) {

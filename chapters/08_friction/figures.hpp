@@ -1,4 +1,5 @@
-// Chapter 8's figures (README.md, "Figures"): the stick, slip and open nodes along Gamma_c with
+// Chapter 8's figures (README.md, "Figures"): the two bodies and their coarsest meshes, the
+// stick, slip and open nodes along Gamma_c with
 // the shear and its bounds, errors against h and against time, the Newton residuals of every
 // load step, and (cattaneo) the stick zone against Q / (F P).
 #pragma once
@@ -19,6 +20,9 @@ struct ExactCurves {
   std::string label;
   double x_min = 0, x_max = 0;  // the window; equal: the whole Gamma_c
 };
+// The scene before any result: both bodies with the coarsest level's meshes, their traces on
+// Gamma_c and the multiplier nodes of the non-mortar side (meshes.png).
+void plot_meshes(const std::string& folder, const FrictionalLevel& coarsest, const Options& o, bool run);
 void plot_zones(const std::string& folder, const FrictionalLevel& r, const Options& o, const ExactCurves& exact,
                 bool run);
 void plot_errors(const std::string& folder, const mortar::ConvergenceTable& table, const Options& o, bool run);

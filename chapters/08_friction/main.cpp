@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
       chapter08::LevelSetup setup = chapter08::level_setup(o, level);
       if (finest && o.start == "nested") setup.start_at = chapter08::nested_start(*finest);
       auto r = std::make_unique<chapter08::FrictionalLevel>(chapter08::solve_frictional_level(setup, scene, m1, m2));
+      if (level == 0) chapter08::plot_meshes(o.out, *r, o, !o.no_plot);  // the bodies, before any result
       if (o.scene == "manufactured") {
         table.add(chapter08::manufactured_row(*r, exact));
       } else {
