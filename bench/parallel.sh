@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Chapter 9's size table (README.md, chapter 9's notes), measured in one run: for each size,
+# Chapter 9's size table (docs/speed.md, chapter 9's evidence), measured in one run: for each size,
 # the distributed contact solve on P ranks (CG + GAMG, inexact Newton), its Newton steps, the
 # Krylov iterations of its final solve and of all its solves, its time and the resident-set
 # peak of all ranks per unknown; beside it, in the same run and while it fits, the physical

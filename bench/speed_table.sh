@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The speed table of README.md ("Speed: the physical limit"), measured in one run: for each
+# The speed table of docs/speed.md ("Speed: the physical limit"), measured in one run: for each
 # chapter and size, the finest level's time, its physical limit (assemble K, one Cholesky
 # factorization, one solve), their ratio, the spread of each over the repetitions, and the
 # memory peak of the level against the limit's. Each program times its finest level and the

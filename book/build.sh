@@ -3,7 +3,7 @@
 # nothing fetched when read) and one PDF (through XeLaTeX, which takes the notes' Unicode as it is):
 #
 #   lessons   the students' book: README.md, the nine lessons (chapters/NN_name/README.md), the
-#             pages of docs/ a lesson links to, the exercises
+#             pages of docs/ a lesson links to (the bibliography, the extensions), the exercises
 #   complete  the same with each chapter's evidence (chapters/NN_name/EVIDENCE.md) after its
 #             lesson, every page of docs/, and every figure under figures/ that no page shows
 #             (appendix "All figures")
@@ -38,8 +38,9 @@ notes() {
   local page
   for page in docs/*.md; do
     [ -f "$page" ] || continue
-    # the lessons' edition carries a page of docs/ only when a lesson or the README links to it
-    if [ "$1" = complete ] || grep -qF "$(basename "$page")" README.md chapters/0[0-9]_*/README.md; then
+    # the lessons' edition carries a page of docs/ only when a lesson links to it (the
+    # bibliography, the extensions); the README's other links keep their text there
+    if [ "$1" = complete ] || grep -qF "docs/$(basename "$page")" chapters/0[0-9]_*/README.md; then
       echo "$page"
     fi
   done

@@ -18,19 +18,35 @@ build=${BUILD:-build}
 out=${OUT:-results/${program}_rates}
 [ -x "$build/$program" ] || { echo "rate_table.sh: no $build/$program (cmake --build $build --target $program)" >&2; exit 2; }
 mkdir -p "$out"
-echo "| $(echo "h2/h1") | column | local rates, levels 0-1, 1-2, ... | finest level |"
-echo "|---|---|---|---|"
+rows=()
+most=0
 for ratio in $ratios; do
   folder=$out/ratio_${ratio/\//_}
   "$build/$program" "$@" --no-plot --h-ratio "$ratio" --out "$folder" > "$folder.log" 2>&1 ||
     { tail -n 20 "$folder.log" >&2; exit 1; }
   for column in $columns; do
     rates=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
-                                       col { printf "%s%.2f", (NR > 2 ? " " : ""), $col }' "$folder/local_rates.csv")
+                                       col { printf "%s%.2f", (NR > 2 ? " | " : ""), $col }' "$folder/local_rates.csv")
     [ -n "$rates" ] || { echo "rate_table.sh: no column $column in $folder/local_rates.csv" >&2; exit 2; }
     finest=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
                                         col { v = $col } END { printf "%.3g", v }' "$folder/convergence.csv")
-    echo "| $ratio | \`$column\` | $rates | $finest |"
+    count=$(($(grep -o ' | ' <<< "$rates" | wc -l) + 1))
+    [ "$count" -le "$most" ] || most=$count
+    rows+=("$ratio|$column|$count|$rates|$finest")
   done
+done
+# one column per pair of levels (a shorter run leaves its last cells empty), then the finest value
+header="| h2/h1 | column |"
+rule="|---|---|"
+for ((k = 0; k < most; ++k)); do header+=" $k-$((k + 1)) |"; rule+="---|"; done
+echo "$header finest level |"
+echo "$rule---|"
+for row in "${rows[@]}"; do
+  IFS='|' read -r ratio column count _ <<< "$row"
+  rates=$(cut -d'|' -f4- <<< "$row" | sed 's/ *|[^|]*$//')
+  finest=${row##*|}
+  pad=""
+  for ((k = count; k < most; ++k)); do pad+=" |"; done
+  echo "| $ratio | \`$column\` | $rates |$pad $finest |"
 done
 echo "rate_table.sh: runs and logs in $out/" >&2

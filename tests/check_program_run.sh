@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One run of a chapter program, checked for what every run must keep (README.md, "Output
+# One run of a chapter program, checked for what every run must keep (docs/running.md, "Output
 # contract"): the expected exit status, no sanitizer report, nothing written after a refusal,
 # and no NaN or inf in any CSV or JSON written.
 #

@@ -1,5 +1,5 @@
 // Bilateral contact end to end on small meshes: the patch test and the hard cases of
-// README.md, each giving a finite answer that converges (or a clear error).
+// docs/hard_cases.md, each giving a finite answer that converges (or a clear error).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,7 +41,7 @@ TEST(BilateralContact, integral_matching_passes_the_patch_test_pointwise_does_no
     }
 }
 
-// Hard case rows (README.md). A "converging answer": finite errors, the finer level better,
+// Hard case rows (docs/hard_cases.md). A "converging answer": finite errors, the finer level better,
 // and for integral matching an observed energy rate near Theorem 4.2's 1 (band 0.75: these
 // are levels 6-12 and 12-24 elements, still pre-asymptotic for the extreme cases).
 

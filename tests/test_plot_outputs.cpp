@@ -198,3 +198,53 @@ TEST(PlotOutputs, room_above_data_raises_the_top_of_the_axis) {
   mortar::room_above_data(empty, 2);
   EXPECT_TRUE(empty.settings.empty());
 }
+
+// A title is set in lines that fit the figure's width, broken between words: none runs off
+// the picture however many options it names.
+TEST(PlotOutputs, a_title_that_fits_stays_on_one_line) {
+  const std::string title = "relative errors against h: manufactured, coulomb F = 0.3";
+  const std::vector<std::string> lines = mortar::title_lines(title, 900);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0], title);
+}
+
+TEST(PlotOutputs, a_long_title_is_set_in_lines_that_fit_the_figure) {
+  const std::string title =
+      "the last load step on the finest mesh: manufactured, coulomb F = 0.3, h_2/h_1 = 1.5, non-mortar body 1, "
+      "integral matching, the stick zone and the slip zone against the exact shear";
+  for (const int width : {900, 600, 450}) {
+    const std::vector<std::string> lines = mortar::title_lines(title, width);
+    ASSERT_GE(lines.size(), 2u) << "at " << width << " pixels";
+    // 8.5 pixels a character (DejaVu Sans 12), 60 pixels of margins; _ { } take no room
+    const double room = (width - 60) / 8.5;
+    std::string joined;
+    for (const std::string& line : lines) {
+      std::size_t drawn = 0;
+      for (char c : line) drawn += c != '_' && c != '{' && c != '}';
+      EXPECT_LE(drawn, room) << "line '" << line << "' at " << width << " pixels";
+      EXPECT_FALSE(line.empty());
+      EXPECT_NE(line.front(), ' ');
+      EXPECT_NE(line.back(), ' ');
+      joined += (joined.empty() ? "" : " ") + line;
+    }
+    EXPECT_EQ(joined, title) << "the lines hold every word, in order";
+  }
+  // the first break falls after the colon, where the title's two parts meet
+  EXPECT_EQ(mortar::title_lines(title, 900)[0], "the last load step on the finest mesh:");
+}
+
+TEST(PlotOutputs, the_script_sets_a_long_title_on_two_lines) {
+  const fs::path dir = fs::temp_directory_path() / "mortar_plot_long_title";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  mortar::Figure fig;
+  fig.title = "a title much longer than a narrow figure can hold on one line: it must wrap";
+  fig.width = 700;  // room for 75 characters: the 76 of the title do not fit
+  fig.series.push_back({"data", {0, 1}, {0, 1}, "lines", ""});
+  mortar::write_figure(dir.string(), "long", fig, false);
+  const std::string gp = read(dir / "long.gp");
+  EXPECT_NE(gp.find("set title 'a title much longer than a narrow figure can hold on one line:'.\"\\n\".'it must wrap'"),
+            std::string::npos)
+      << gp;
+  fs::remove_all(dir);
+}
