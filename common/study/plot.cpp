@@ -57,6 +57,23 @@ std::string escape(const std::string& text) {
   return out;
 }
 
+// The characters of a label as drawn: UTF-8 continuation bytes and the marks of gnuplot's
+// enhanced text (_ ^ { }) take no room of their own.
+std::size_t drawn_length(const std::string& text) {
+  std::size_t n = 0;
+  for (unsigned char c : text)
+    if ((c & 0xC0) != 0x80 && c != '_' && c != '^' && c != '{' && c != '}') ++n;
+  return n;
+}
+
+// A title for gnuplot's "set title": its lines in single quotes joined by "\n".
+std::string title_expression(const std::string& title, int width) {
+  std::string out;
+  for (const std::string& line : title_lines(title, width))
+    out += (out.empty() ? "'" : ".\"\\n\".'") + escape(line) + "'";
+  return out.empty() ? "''" : out;
+}
+
 // The figure and its panels, in drawing order (top to bottom).
 void collect_panels(const Figure& fig, std::vector<const Figure*>& out) {
   out.push_back(&fig);
@@ -152,6 +169,35 @@ std::string reference_slope_style(std::size_t k) {
   return styles[k % 4];
 }
 
+std::vector<std::string> title_lines(const std::string& title, int width) {
+  const std::size_t room = static_cast<std::size_t>(std::max(20.0, (width - 60) / 8.5));
+  const std::string text = greek(title);
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word) {
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (line.empty() || drawn_length(longer) <= room) {
+      line = longer;
+      continue;
+    }
+    // break after the last colon or comma of the line when it is past half the room, so that
+    // the title splits where its parts meet rather than mid-phrase
+    const std::size_t colon = line.rfind(": "), comma = line.rfind(", ");
+    std::size_t mark = colon == std::string::npos ? comma : comma == std::string::npos ? colon : std::max(colon, comma);
+    if (mark != std::string::npos && drawn_length(line.substr(0, mark + 1)) > room / 2) {
+      lines.push_back(line.substr(0, mark + 1));
+      line = line.substr(mark + 2) + " " + word;
+    } else {
+      lines.push_back(line);
+      line = word;
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
 void write_figure(const std::string& folder, const std::string& name, const Figure& figure,
                   bool run_gnuplot) {
   namespace fs = std::filesystem;
@@ -191,7 +237,7 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
       gp << (p == panels.front() ? "" : "reset\n") << "set origin 0," << std::max(0.0, top) << "\n"
          << "set size " << static_cast<double>(fig.width) / width << "," << h << "\n";
     }
-    gp << "set title '" << escape(fig.title) << "'\n"
+    gp << "set title " << title_expression(fig.title, fig.width) << "\n"
        << "set xlabel '" << escape(fig.xlabel) << "'\n"
        << "set ylabel '" << escape(fig.ylabel) << "'\n"
        << "set key " << fig.key << " box opaque spacing 1.15\n"
