@@ -23,17 +23,23 @@ case "$mode" in check | update | list) ;; *) sed -n '2,19p' "$0" >&2; exit 2 ;; 
 [ $# -ge 1 ] || { echo "evidence_tables.sh: no page given" >&2; exit 2; }
 cd "$(dirname "$0")/.."
 drifted=0
-for page in "$@"; do
-  [ -r "$page" ] || { echo "evidence_tables.sh: cannot read $page" >&2; exit 2; }
-  scratch=$(mktemp -d)
-  # the page cut at the markers: text pieces and, between them, one command per table
-  awk -v dir="$scratch" '
+# split PAGE DIR: the page cut at the markers: text pieces (DIR/after0, DIR/textK, DIR/afterK),
+# one command per table (DIR/cmdK), the tables as written (DIR/oldK), their number (DIR/count)
+split() {
+  awk -v dir="$2" '
     /^<!-- table: .* -->$/ { n++; cmd = $0; sub(/^<!-- table: /, "", cmd); sub(/ -->$/, "", cmd)
                              print cmd > (dir "/cmd" n); print $0 > (dir "/text" n); inside = 1; next }
     inside && /^<!-- end table -->$/ { inside = 0; close(dir "/old" n); print $0 > (dir "/after" n); next }
     inside { print > (dir "/old" n); next }
     { print > (dir "/after" n) }
-    END { if (inside) { print "unterminated table " n > "/dev/stderr"; exit 2 } print n + 0 > (dir "/count") }' "$page"
+    END { if (inside) { print "unterminated table " n > "/dev/stderr"; exit 2 } print n + 0 > (dir "/count") }' "$1"
+}
+
+
+for page in "$@"; do
+  [ -r "$page" ] || { echo "evidence_tables.sh: cannot read $page" >&2; exit 2; }
+  scratch=$(mktemp -d)
+  split "$page" "$scratch"
   count=$(cat "$scratch/count")
   for ((k = 1; k <= count; ++k)); do
     cmd=$(cat "$scratch/cmd$k")
@@ -52,10 +58,17 @@ for page in "$@"; do
     fi
   done
   if [ "$mode" = update ]; then
+    # the page as it is now (it may have been edited while the runs went on), its tables replaced
+    mkdir -p "$scratch/now"
+    split "$page" "$scratch/now"
+    for ((k = 1; k <= count; ++k)); do
+      cmp -s "$scratch/cmd$k" "$scratch/now/cmd$k" ||
+        { echo "evidence_tables.sh: $page changed its tables while they were run; nothing written" >&2; exit 1; }
+    done
     {
-      cat "$scratch/after0" 2>/dev/null || true
+      cat "$scratch/now/after0" 2>/dev/null || true
       for ((k = 1; k <= count; ++k)); do
-        cat "$scratch/text$k" "$scratch/new$k" "$scratch/after$k"
+        cat "$scratch/now/text$k" "$scratch/new$k" "$scratch/now/after$k"
       done
     } > "$scratch/page"
     cp "$scratch/page" "$page"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A local-rate table of the evidence pages, remade from its runs: one run of PROGRAM for each
 # mesh ratio h2/h1 in RATIOS, with the OPTIONs given, then for each ratio and each column of
-# COLUMNS the rates between levels k-1 and k (the run's local_rates.csv) and the finest level's
-# value (convergence.csv), as a Markdown table on stdout. The evidence pages hold its output
+# COLUMNS the rates between levels k-1 and k (the run's local_rates.csv) and the coarsest and
+# finest levels' values (convergence.csv), as a Markdown table on stdout. The evidence pages hold its output
 # between "<!-- table: ... -->" markers (chapters/evidence_tables.sh remakes and checks them).
 #
 #   bash chapters/rate_table.sh PROGRAM 'RATIOS' 'COLUMNS' [OPTION...]
@@ -28,25 +28,26 @@ for ratio in $ratios; do
     rates=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
                                        col { printf "%s%.2f", (NR > 2 ? " | " : ""), $col }' "$folder/local_rates.csv")
     [ -n "$rates" ] || { echo "rate_table.sh: no column $column in $folder/local_rates.csv" >&2; exit 2; }
-    finest=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
-                                        col { v = $col } END { printf "%.3g", v }' "$folder/convergence.csv")
+    ends=$(awk -F, -v want="$column" 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == want) col = c; next }
+                                      col { if (NR == 2) first = $col; v = $col } END { printf "%.3g | %.3g", first, v }' "$folder/convergence.csv")
     count=$(($(grep -o ' | ' <<< "$rates" | wc -l) + 1))
     [ "$count" -le "$most" ] || most=$count
-    rows+=("$ratio|$column|$count|$rates|$finest")
+    rows+=("$ratio|$column|$count|$rates|$ends")
   done
 done
-# one column per pair of levels (a shorter run leaves its last cells empty), then the finest value
+# one column per pair of levels (a shorter run leaves its last cells empty), then the values at
+# the coarsest and the finest level
 header="| h2/h1 | column |"
 rule="|---|---|"
 for ((k = 0; k < most; ++k)); do header+=" $k-$((k + 1)) |"; rule+="---|"; done
-echo "$header finest level |"
-echo "$rule---|"
+echo "$header coarsest level | finest level |"
+echo "$rule---|---|"
 for row in "${rows[@]}"; do
   IFS='|' read -r ratio column count _ <<< "$row"
-  rates=$(cut -d'|' -f4- <<< "$row" | sed 's/ *|[^|]*$//')
-  finest=${row##*|}
+  rates=$(cut -d'|' -f4- <<< "$row" | sed 's/ *|[^|]*|[^|]*$//')
+  values=$(sed 's/.*|\([^|]*|[^|]*\)$/\1/' <<< "$row")
   pad=""
   for ((k = count; k < most; ++k)); do pad+=" |"; done
-  echo "| $ratio | \`$column\` | $rates |$pad $finest |"
+  echo "| $ratio | \`$column\` | $rates |$pad $values |"
 done
 echo "rate_table.sh: runs and logs in $out/" >&2

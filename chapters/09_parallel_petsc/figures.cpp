@@ -22,7 +22,7 @@ void plot_solves(const std::string& folder, const mortar::ConvergenceTable& tabl
   it.settings = {"set yrange [0:*]"};
   it.key = "bottom right";
   char label[96];
-  std::snprintf(label, sizeof label, "the largest solve (the final one, to ‖Br‖ ≤ %g ‖Bb‖)", rtol);
+  std::snprintf(label, sizeof label, "the largest solve (the final one, to ‖Bρ‖ ≤ %g ‖Bb‖, ρ the residual)", rtol);
   it.series = {{"all solves of the level together", dofs, table.column("ksp_iterations_total"), "linespoints", ""},
                {label, dofs, table.column("ksp_iterations_max"), "linespoints", ""}};
   mortar::write_figure(folder, "iterations", it, run);

@@ -31,6 +31,7 @@
 #include "common/linalg/memory_estimate.hpp"
 #include "common/study/json_writer.hpp"
 #include "common/study/options.hpp"
+#include "common/timing/machine_load.hpp"
 #include "common/timing/stopwatch.hpp"
 #include "distributed_condensation.hpp"
 #include "distributed_newton.hpp"
@@ -155,6 +156,9 @@ double timed(F&& f) {
 
 int run(const Options& o, const mortar::OptionParser& parser) {
   const bool root = chapter09::rank() == 0;
+  // the machine's CPU clock, to say at the end whether other work shared the cores
+  const mortar::CpuClock cpu_start = mortar::CpuClock::now();
+  const mortar::Stopwatch wall;
   mortar::ConvergenceTable table;
   double worst_difference = 0;
   bool all_identical = true;
@@ -282,8 +286,17 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       std::printf("\n");
     }
   }
+  // The timings above mean what they say only if no other work shared the cores (a loaded
+  // machine once made PETSc look slower than CHOLMOD): the CPU time of other processes.
+  double own_s = mortar::CpuClock::now().own_s - cpu_start.own_s, own_s_all = 0;
+  MPI_Allreduce(&own_s, &own_s_all, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  const mortar::MachineLoad load = mortar::machine_load(cpu_start, mortar::CpuClock::now(), own_s_all, wall.seconds());
   if (root) {
+    std::printf("machine: %s\n", load.describe().c_str());
     mortar::JsonObject results;
+    results.set("machine_load_average", load.load_average)
+        .set("other_work_share", load.other_work_share)
+        .set("timings_meaningful", load.meaningful());
     results.set("ranks", chapter09::ranks())
         .set("dofs", table.column("dofs").back())
         .set("newton_steps", newton_last)
