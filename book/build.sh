@@ -91,7 +91,10 @@ build() {
   subtitle="After F. Ben Belgacem, P. Hild and P. Laborde, The mortar finite element method for contact problems (1998)"
   [ "$edition" = lessons ] && subtitle="The lessons. $subtitle"
   [ "$edition" = complete ] && subtitle="The lessons with their evidence. $subtitle"
-  local common=(-f "$reader" --toc --toc-depth=2 --lua-filter book/book.lua
+  # the lessons' contents list the chapters; the complete one their sections too
+  local depth=2
+  [ "$edition" = lessons ] && depth=1
+  local common=(-f "$reader" --toc --toc-depth=$depth --lua-filter book/book.lua
                 --resource-path="$root" -M lang=en -M "title=$title" -M "subtitle=$subtitle")
   pandoc "${common[@]}" -t html5 --wrap=none --mathml --self-contained --css book/book.css \
     -o "$out/$edition.html" "$dir"/*.md
