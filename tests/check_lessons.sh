@@ -11,7 +11,9 @@
 # each evidence page's reading time within 10% of the computed one ("| ... | 27 min | 41 min |").
 #
 #   check_lessons.sh SOURCE_DIR            print the table, then check
-#   check_lessons.sh SOURCE_DIR --minutes  print "PAGE MINUTES" only (to write the roadmap)
+#   check_lessons.sh SOURCE_DIR --minutes  print "PAGE MINUTES" only
+#   check_lessons.sh SOURCE_DIR --write    write each page's minutes into the README's roadmap
+#                                          ("[N min](chapters/NN_name/README.md)", the same for EVIDENCE.md)
 set -u
 source_dir=${1:?usage: check_lessons.sh SOURCE_DIR [--minutes]}
 mode=${2:-check}
@@ -39,6 +41,15 @@ done
 if [ "$mode" = --minutes ]; then
   for page in "${pages[@]}"; do echo "${page#"$source_dir"/} $(minutes "$page")"; done
   exit 0
+fi
+
+if [ "$mode" = --write ]; then
+  for page in "${pages[@]}"; do
+    rel=${page#"$source_dir"/}
+    [ "$rel" = README.md ] && continue
+    sed -i "s|\[[0-9]* min\](${rel//./\\.})|[$(minutes "$page") min]($rel)|" "$source_dir/README.md"
+  done
+  mode=check
 fi
 
 failures=0
