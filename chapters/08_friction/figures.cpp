@@ -34,7 +34,7 @@ void plot_meshes(const std::string& folder, const FrictionalLevel& coarsest, con
   // the dual multipliers live on the nodes xi^1 of the non-mortar trace, glued by integral matching
   mortar::write_figure(folder, "meshes",
                        mortar::two_body_meshes(coarsest.bodies, coarsest.gamma, mortar::Matching::integral,
-                                               "the two bodies, coarsest level: " + scene_title(o)),
+                                               scene_title(o)),
                        run);
 }
 
@@ -44,7 +44,8 @@ void plot_zones(const std::string& folder, const FrictionalLevel& r, const Optio
   mortar::Figure fig;
   fig.title = "the last load step on the finest mesh: " + scene_title(o);
   fig.xlabel = "x along Γ_c [m]";
-  fig.ylabel = "shear λ_t and its bounds ±s [Pa]";
+  // the scenes are nondimensional (E_1 = 1 Pa, L = 1 m): a stress of 3e-4 Pa is 3e-4 E_1
+  fig.ylabel = "shear λ_t and bounds ±s [Pa] = multiples of E_1";
   fig.key = "below maxrows 2";
   fig.width = 1000;
   fig.height = 720;
