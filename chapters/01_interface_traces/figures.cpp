@@ -109,6 +109,15 @@ void plot_error_vs_time(const std::string& folder, const mortar::ConvergenceTabl
                        run);
 }
 
+namespace {
+// dark colours only: gnuplot's fifth default, a pale yellow, hid the nested ratio's curve
+std::string curve_colour(int k) {
+  static const char* colours[] = {"#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+                                  "#7f7f7f", "#bcbd22", "#000000"};
+  return colours[(k - 1) % 10];
+}
+}  // namespace
+
 void plot_integral_errors(const std::string& folder, const std::vector<IntegralCurve>& curves,
                           bool run) {
   Figure fig;
@@ -118,7 +127,8 @@ void plot_integral_errors(const std::string& folder, const std::vector<IntegralC
   fig.log_x = fig.log_y = true;
   // the key below the axes, never over a curve (every part of the axes holds one)
   fig.key = "at screen 0.5, screen 0.01 center bottom Left reverse";
-  fig.settings.push_back("set bmargin 11");
+  fig.settings.push_back("set bmargin 13");  // seven rows of key below the axis label
+  fig.settings.push_back("set yrange [1e-18:*]");  // the 1e-17 floor above the frame
   fig.width = 1100;
   fig.height = 950;
   auto clamp = [](std::vector<double> v) {
@@ -128,7 +138,7 @@ void plot_integral_errors(const std::string& folder, const std::vector<IntegralC
   int k = 0;
   for (const auto& c : curves)
     fig.series.push_back({"pointwise, " + c.label, c.h1, clamp(c.pointwise), "linespoints",
-                          "pt " + std::to_string(++k) + " lw 1 dt 2"});
+                          "pt " + std::to_string(++k) + " lw 1.5 dt 2 lc rgb '" + curve_colour(k) + "'"});
   // The mortar curves all sit at round-off: draw their worst case over every ratio.
   Series worst{"mortar, worst over all ratios", curves.front().h1, {}, "linespoints",
                "pt 7 ps 1.5 lw 3 lc rgb '#1f77b4'"};

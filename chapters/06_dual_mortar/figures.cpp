@@ -66,7 +66,7 @@ void plot_dual_basis(const std::string& folder, bool run) {
                                    "the hats of M_h^1 (constant on the end elements): D is tridiagonal");
   fig.height = 420;
   mortar::Figure dual = basis_panel(mortar::dual_end_modified_p1(t), t,
-                                    "the dual basis on the same nodes: int psi_i phi_j = 0 for i != j, D is diagonal");
+                                    "the dual basis on the same nodes: ∫ psi_i phi_j dx = 0 for i ≠ j, D is diagonal");
   dual.height = 420;
   fig.panels.push_back(dual);
   mortar::write_figure(folder, "dual_basis", fig, run);

@@ -130,9 +130,12 @@ void plot_pressure(const std::string& folder, const BilateralLevel& level,
     reference.x.push_back(L * i / 400.0);
     reference.y.push_back(exact.pressure(L * i / 400.0));
   }
-  fig.series.push_back(reference);
+  // the exact curve drawn last, over the computed points, so that both show; a margin above
+  // keeps the highest points off the frame
   fig.series.push_back(curve_series(level.pressure, "computed, at the non-mortar nodes", "linespoints",
-                                    "pt 7 ps 0.8 lc rgb '#1f77b4'"));
+                                    "pt 7 ps 0.6 lc rgb '#1f77b4'"));
+  fig.series.push_back(reference);
+  fig.settings.push_back("set offsets 0, 0, graph 0.05, 0");
   write_figure(folder, "pressure", fig, run);
 }
 
@@ -199,7 +202,8 @@ void plot_jump(const std::string& folder, const BilateralLevel& level, const std
   // a quadratic piece drawn as the curve it is, sampled at 16 points
   Series pieces{"[u_h.n], quadratic on each merged segment", {}, {}, "lines", "lw 2 lc rgb '#d62728'"};
   for (int e = 0; quadratic && e < level.jump.pieces(); ++e)
-    if (in_window(level.jump.x[2 * e]) && in_window(level.jump.x[2 * e + 2]))
+    // every piece that overlaps the window (the x range clips it), so none is missing at its ends
+    if (level.jump.x[2 * e + 2] > lo && level.jump.x[2 * e] < hi)
       for (int k = 0; k <= 16; ++k) {
         const double s = k / 16.0;
         pieces.x.push_back(level.jump.x[2 * e] + s * (level.jump.x[2 * e + 2] - level.jump.x[2 * e]));
@@ -231,7 +235,7 @@ void plot_patch_test(const std::string& folder, const PatchTestResult& pointwise
   fig.height = 700;
   fig.series.push_back(curve_series(pointwise.sigma22_body1, "pointwise matching, body 1", "linespoints", "pt 6 lc rgb '#d62728'"));
   fig.series.push_back(curve_series(pointwise.sigma22_body2, "pointwise matching, body 2", "linespoints", "pt 4 lc rgb '#ff7f0e'"));
-  fig.series.push_back(curve_series(integral.sigma22_body1, integral_label + ", body 1", "linespoints", "pt 7 lw 2 lc rgb '#1f77b4'"));
+  fig.series.push_back(curve_series(integral.sigma22_body1, integral_label + ", body 1", "linespoints", "pt 6 ps 2 lw 2 lc rgb '#1f77b4'"));  // open rings: both bodies sit at -1
   fig.series.push_back(curve_series(integral.sigma22_body2, integral_label + ", body 2", "linespoints", "pt 5 lw 2 lc rgb '#17becf'"));
   write_figure(folder, "patch_test", fig, run);
 }

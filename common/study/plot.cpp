@@ -182,11 +182,11 @@ std::vector<std::string> title_lines(const std::string& title, int width) {
       line = longer;
       continue;
     }
-    // break after the last colon or comma of the line when it is past half the room, so that
+    // break after the last colon or comma of the line when it is past a third of the room, so that
     // the title splits where its parts meet rather than mid-phrase
     const std::size_t colon = line.rfind(": "), comma = line.rfind(", ");
     std::size_t mark = colon == std::string::npos ? comma : comma == std::string::npos ? colon : std::max(colon, comma);
-    if (mark != std::string::npos && drawn_length(line.substr(0, mark + 1)) > room / 2) {
+    if (mark != std::string::npos && drawn_length(line.substr(0, mark + 1)) > room / 3) {
       lines.push_back(line.substr(0, mark + 1));
       line = line.substr(mark + 2) + " " + word;
     } else {

@@ -52,7 +52,7 @@ struct Figure {
 };
 
 // The lines a title is set in on a figure `width` pixels wide: one line when it fits, else
-// broken between words (after a colon or a comma where one falls late enough in the line), so
+// broken between words (after a colon or a comma past a third of the line where there is one), so
 // that no title runs off the picture. A line's width is estimated at 8.5 pixels a character in
 // DejaVu Sans 12 (measured: 813 pixels for 102 characters), sub- and superscript marks
 // (_ ^ { }) not counted, with 60 pixels kept free for the margins.
