@@ -21,6 +21,10 @@ mode=${1:-}
 shift || true
 case "$mode" in check | update | list) ;; *) sed -n '2,19p' "$0" >&2; exit 2 ;; esac
 [ $# -ge 1 ] || { echo "evidence_tables.sh: no page given" >&2; exit 2; }
+# the pages as given, from where the command was run; the commands from the top folder
+pages=()
+for page in "$@"; do pages+=("$(realpath -m "$page")"); done
+set -- "${pages[@]}"
 cd "$(dirname "$0")/.."
 drifted=0
 # split PAGE DIR: the page cut at the markers: text pieces (DIR/after0, DIR/textK, DIR/afterK),
@@ -31,7 +35,7 @@ split() {
                              print cmd > (dir "/cmd" n); print $0 > (dir "/text" n); inside = 1; next }
     inside && /^<!-- end table -->$/ { inside = 0; close(dir "/old" n); print $0 > (dir "/after" n); next }
     inside { print > (dir "/old" n); next }
-    { print > (dir "/after" n) }
+    { print > (dir "/after" (n + 0)) }  # n + 0: the text before the first table is after0
     END { if (inside) { print "unterminated table " n > "/dev/stderr"; exit 2 } print n + 0 > (dir "/count") }' "$1"
 }
 
