@@ -70,9 +70,7 @@ Figure two_body_meshes(const TwoBodies& bodies, const ContactInterface& gamma, M
   f.xlabel = "x [m]";
   f.ylabel = "y [m] (body 1 lifted by " + metres(lift) + "; below: the traces on Gamma_c)";
   f.equal_axes = true;
-  // above, in two columns: not beside, so tall bodies (chapter 5) keep their title inside the
-  // canvas, and not in one column, which took a sixth of the height from the meshes
-  f.key = "above maxrows 4";
+  f.key = "above";  // not beside: tall bodies (chapter 5) keep their title inside the canvas
   f.width = 1000;
   f.height = 950;
   for (int l = 0; l < 2; ++l)
