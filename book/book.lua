@@ -86,7 +86,9 @@ local function header(h)
       h.content = pandoc.Inlines(retitle)
     end
   else
-    h.identifier = key .. "--" .. h.identifier
+    -- GitHub drops the periods of a heading's anchor ("theorem-51" for "Theorem 5.1"), pandoc
+    -- keeps them: the book drops them too, so that links written for GitHub find their heading
+    h.identifier = key .. "--" .. h.identifier:gsub("%.", "")
   end
   return h
 end
@@ -111,6 +113,7 @@ local function link(l)
     return l
   end
   local file, fragment = target:match("^([^#]*)#?(.*)$")
+  fragment = fragment:gsub("%.", "")  -- the headings' anchors have no periods (header above)
   if file == "" then
     l.target = "#" .. key .. "--" .. fragment
     return l

@@ -43,7 +43,8 @@ if grep -q 'Could not convert TeX math' "$out.log"; then
 fi
 for note in "$source_dir"/chapters/0[0-9]_*/README.md "$source_dir"/chapters/0[0-9]_*/EVIDENCE.md; do
   [ -f "$note" ] || continue
-  title=$(sed -n '/^# /{s/^# //p;q}' "$note")
+  # the title as text: up to its first formula, which the HTML sets as MathML
+  title=$(sed -n '/^# /{s/^# //p;q}' "$note" | sed 's/ *\$.*//')
   grep -qF "$title" "$out/complete.html" || fail "title missing from complete.html: $title"
   case "$note" in
     */README.md) grep -qF "$title" "$out/lessons.html" || fail "lesson title missing from lessons.html: $title" ;;
