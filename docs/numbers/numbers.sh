@@ -13,7 +13,8 @@
 # output blocks and tables included.
 #
 #   numbers.sh tokens FILE...     the tokens of FILE... as "token<TAB>count"
-#   numbers.sh where              for every (note, number): where it is now, as a TSV on stdout
+#   numbers.sh where              for every (note, number): where it is now (up to three lines per
+#                                 page), or why it went, as a TSV on stdout (docs/numbers/where.tsv)
 #   numbers.sh check              status 1, with the missing numbers, when one is lost
 #   numbers.sh inventory COMMIT   rewrite before.tsv from the notes at COMMIT (done once)
 set -euo pipefail
@@ -66,13 +67,15 @@ case "${1:-}" in
       awk -F'\t' -v n="$note" '$1 == n {print $2 "\t" $3}' "$here/before.tsv" > "$scratch/before"
       if [ "$mode" = where ]; then
         while IFS=$'\t' read -r number count; do
-          now=$(awk -F'\t' -v x="$number" '$1 == x {print $2}' "$scratch/now")
+          # compared as strings: 0.01 and 0.010 are different numbers printed
+          now=$(awk -F'\t' -v x="$number" '$1 "" == x "" {print $2}' "$scratch/now")
           places=$(for p in "${pages[@]}"; do
                      awk '/^```cpp/ {code = 1; next} code && /^```/ {code = 0; next} !code {print FNR "\t" $0}' "$p" |
-                       grep -E "[^0-9.]${number//./\\.}([^0-9]|\$)|^[0-9]+	${number//./\\.}([^0-9]|\$)" | cut -f1 | head -3 |
-                       sed "s|^|$p:|"
+                       { grep -E "[^0-9.]${number//./\\.}([^0-9]|\$)|^[0-9]+	${number//./\\.}([^0-9]|\$)" || true; } |
+                       cut -f1 | head -3 | sed "s|^|$p:|"
                    done | paste -sd' ')
-          gone=$(awk -F'\t' -v x="$number" '$1 == x {print "gone: " $2}' "$scratch/gone")
+          gone=$(cat "$here"/gone*.tsv 2>/dev/null |
+                 awk -F'\t' -v n="$note" -v x="$number" '$1 == n && $2 "" == x "" {print "gone (" $3 "): " $4}')
           printf '%s\t%s\t%s\t%s\t%s\n' "$note" "$number" "$count" "${now:-0}" "${places:-}${gone:+ $gone}"
         done < "$scratch/before"
       else
