@@ -11,6 +11,8 @@
 # BUILD (default: build) holds the programs; the runs and their logs go to OUT (default:
 # results/PROGRAM_rates/ratio_R), named on stderr.
 set -euo pipefail
+# shellcheck source=/dev/null
+source "$(dirname "$0")/rate_columns.sh"
 [ $# -ge 3 ] || { sed -n '2,12p' "$0" >&2; exit 2; }
 program=$1 ratios=$2 columns=$3
 shift 3
@@ -37,11 +39,8 @@ for ratio in $ratios; do
 done
 # one column per pair of levels (a shorter run leaves its last cells empty), then the values at
 # the coarsest and the finest level
-header="| h2/h1 | column |"
-rule="|---|---|"
-for ((k = 0; k < most; ++k)); do header+=" $k-$((k + 1)) |"; rule+="---|"; done
-echo "$header coarsest level | finest level |"
-echo "$rule---|---|"
+echo "| h2/h1 | column |$(level_header "$most") coarsest level | finest level |"
+echo "|---|---|$(level_rule "$most")---|---|"
 for row in "${rows[@]}"; do
   IFS='|' read -r ratio column count _ <<< "$row"
   rates=$(cut -d'|' -f4- <<< "$row" | sed 's/ *|[^|]*|[^|]*$//')

@@ -12,6 +12,8 @@
 # BUILD (default: build) holds the program; the runs and their logs go to OUT (default:
 # results/ch06_rate_table), named on stderr.
 set -euo pipefail
+# shellcheck source=/dev/null
+source "$(dirname "$0")/../rate_columns.sh"
 build=${BUILD:-build}
 out=${OUT:-results/ch06_rate_table}
 program=$build/ch06_dual_mortar
@@ -48,11 +50,8 @@ for ratio in 3/2 2/3 1/3 3; do
     done
   done
 done
-header="| \$h_2/h_1\$ | quantity | basis |"
-rule="|---|---|---|"
-for ((k = 0; k < most; ++k)); do header+=" $k-$((k + 1)) |"; rule+="---|"; done
-echo "$header fit |"
-echo "$rule---|"
+echo "| \$h_2/h_1\$ | quantity | basis |$(level_header "$most") fit |"
+echo "|---|---|---|$(level_rule "$most")---|"
 for row in "${rows[@]}"; do
   IFS=$'\t' read -r ratio label basis count rates fit <<< "$row"
   pad=""
