@@ -8,8 +8,9 @@
 #             lesson, every page of docs/, and every figure under figures/ that no page shows
 #             (appendix "All figures")
 #
-#   bash book/build.sh OUT_DIR     writes OUT_DIR/lessons.{html,pdf}, OUT_DIR/complete.{html,pdf}
-#                                  and OUT_DIR/pages.txt ("lessons N" and "complete M": the PDFs' pages)
+#   bash book/build.sh OUT_DIR     writes OUT_DIR/lessons.{html,pdf}, OUT_DIR/complete.{html,pdf},
+#                                  OUT_DIR/pages.txt ("lessons N" and "complete M": the PDFs' pages)
+#                                  and OUT_DIR/figures.txt (the figures the complete edition holds)
 #
 # Needs pandoc, texlive-xetex, texlive-latex-recommended, texlive-fonts-recommended, lmodern
 # and poppler-utils (bash course.sh book installs them).
@@ -24,6 +25,19 @@ cd "$root"
 reader=markdown+lists_without_preceding_blankline+autolink_bare_uris
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+# The book's figures: every PNG under figures/ but those git ignores (the wall-time figures,
+# which every run draws anew and nobody commits), so that a tree where the course has run gives
+# the same book, page for page, as a fresh clone.
+book_figures() {
+  local all ignored
+  all=$(find figures -name '*.png' | LC_ALL=C sort)
+  if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+    ignored=$(printf '%s\n' "$all" | git check-ignore --stdin || true)
+    [ -z "$ignored" ] || all=$(printf '%s\n' "$all" | grep -vxF -e "$ignored" || true)
+  fi
+  printf '%s\n' "$all"
+}
 
 # notes EDITION: the edition's pages, in reading order
 notes() {
@@ -79,7 +93,7 @@ build() {
       echo
       echo "The figures under \`figures/\` that no page above shows, each under its path."
       echo
-      find figures -name '*.png' | LC_ALL=C sort | while read -r figure; do
+      book_figures | while read -r figure; do
         if ! grep -qF "($figure)" "$dir"/[0-9][0-9].md; then
           printf '![`%s`](%s){file="%s"}\n\n' "$figure" "$figure" "$figure"
         fi
@@ -105,6 +119,7 @@ build() {
     -o "$out/$edition.pdf" "$dir"/*.md
 }
 
+book_figures > "$out/figures.txt"
 build lessons &
 lessons_job=$!
 build complete
