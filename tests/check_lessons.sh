@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The length of every page a student reads, and the reading times the README promises.
 #
-# Words are counted outside fenced code blocks and HTML comments (the quoted code, program
-# output and markers); lines of code are the lines inside fenced blocks. Reading time, in
+# Words are counted outside fenced code blocks (the quoted code and program output; the markers
+# naming a quote's file or a table's command count as words); lines of code are the lines
+# inside fenced blocks. Reading time, in
 # minutes: words / 100 + code lines / 10 (prose with its mathematics at 100 words a minute,
 # code and output at 10 lines a minute).
 #
@@ -21,8 +22,7 @@ limit=3000
 
 # words FILE, code_lines FILE
 words() {
-  awk '/^[[:space:]]*```/ {code = !code; next} !code' "$1" |
-    perl -0pe 's/<!--.*?-->//gs' | wc -w
+  awk '/^[[:space:]]*```/ {code = !code; next} !code' "$1" | wc -w
 }
 code_lines() {
   awk '/^[[:space:]]*```/ {code = !code; next} code' "$1" | wc -l
