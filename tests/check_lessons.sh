@@ -27,8 +27,9 @@ words() {
 code_lines() {
   awk '/^[[:space:]]*```/ {code = !code; next} code' "$1" | wc -l
 }
+# minutes PAGE [FORMAT]: its reading time, rounded to whole minutes unless FORMAT says otherwise
 minutes() {
-  awk -v w="$(words "$1")" -v c="$(code_lines "$1")" 'BEGIN { printf "%.0f", w / 100 + c / 10 }'
+  awk -v w="$(words "$1")" -v c="$(code_lines "$1")" -v f="${2:-%.0f}" 'BEGIN { printf f, w / 100 + c / 10 }'
 }
 
 pages=("$source_dir/README.md")
@@ -77,7 +78,7 @@ for lesson in "$source_dir"/chapters/0[0-9]_*/README.md; do
   for which in lesson evidence; do
     if [ "$which" = lesson ]; then page=$lesson said=${said_lesson:-}; else page=$evidence said=${said_evidence:-}; fi
     [ -n "$said" ] || { fail "README.md: the roadmap row of $dir gives no reading time for its $which"; continue; }
-    true_minutes=$(awk -v w="$(words "$page")" -v c="$(code_lines "$page")" 'BEGIN { printf "%.2f", w / 100 + c / 10 }')
+    true_minutes=$(minutes "$page" %.2f)
     awk -v s="$said" -v t="$true_minutes" 'BEGIN { d = s - t; if (d < 0) d = -d; exit !(d <= 0.1 * t || d < 0.5) }' ||
       fail "README.md: the $which of $dir reads in $true_minutes min, the roadmap says $said min (more than 10% off)"
   done

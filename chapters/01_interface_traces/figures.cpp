@@ -109,14 +109,6 @@ void plot_error_vs_time(const std::string& folder, const mortar::ConvergenceTabl
                        run);
 }
 
-namespace {
-// dark colours only: gnuplot's fifth default, a pale yellow, hid the nested ratio's curve
-std::string curve_colour(int k) {
-  static const char* colours[] = {"#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
-                                  "#7f7f7f", "#bcbd22", "#000000"};
-  return colours[(k + 9) % 10];  // k counts from 1
-}
-}  // namespace
 
 void plot_integral_errors(const std::string& folder, const std::vector<IntegralCurve>& curves,
                           bool run) {
@@ -139,7 +131,7 @@ void plot_integral_errors(const std::string& folder, const std::vector<IntegralC
   for (const auto& c : curves) {
     ++k;
     fig.series.push_back({"pointwise, " + c.label, c.h1, clamp(c.pointwise), "linespoints",
-                          "pt " + std::to_string(k) + " lw 1.5 dt 2 lc rgb '" + curve_colour(k) + "'"});
+                          "pt " + std::to_string(k) + " lw 1.5 dt 2 lc rgb '" + mortar::series_colour(k) + "'"});
   }
   // The mortar curves all sit at round-off: draw their worst case over every ratio.
   Series worst{"mortar, worst over all ratios", curves.front().h1, {}, "linespoints",

@@ -187,8 +187,6 @@ void plot_errors(const std::string& folder, const Options& o, const mortar::Conv
   const auto h = table.column("h");
   // marker and colour both change from series to series (gnuplot's eight colours alone repeat)
   const char* markers[] = {"pt 7", "pt 5", "pt 9", "pt 11", "pt 6", "pt 4", "pt 8", "pt 10", "pt 12", "pt 13"};
-  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2",
-                           "#17becf", "#7f7f7f", "#bcbd22"};
   int k = 0, energy = -1, l2 = -1;
   for (const auto& name : table.columns())
     if (name.rfind("err_", 0) == 0) {
@@ -199,7 +197,7 @@ void plot_errors(const std::string& folder, const Options& o, const mortar::Conv
       // the interpolant lies on the computed energy error: open markers and dashes keep both visible
       const std::string dash = name == "err_energy_interpolant" ? " dt 2 ps 1.8" : "";
       fig.series.push_back({describe(name), h, e, "linespoints",
-                            std::string(markers[k % 10]) + " lw 2 lc rgb '" + colours[k % 10] + "'" + dash});
+                            std::string(markers[k % 10]) + " lw 2 lc rgb '" + mortar::series_colour(k) + "'" + dash});
       ++k;
     }
   // guide slopes for the displacement (energy h, L2 h^2): what P1 reaches where the solution

@@ -159,6 +159,12 @@ std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size
 }
 }  // namespace
 
+std::string series_colour(std::size_t k) {
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                  "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+  return colours[k % 10];
+}
+
 std::string reference_slope_style(std::size_t k) {
   static const char* styles[] = {
       "dt (16,6) lw 2.5 lc rgb '#000000'",            // black, long dashes

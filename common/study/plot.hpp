@@ -38,6 +38,10 @@ struct ReferenceSlope {
 // dashes, dash-dot, dots, dash-dot-dot), so two of them can be told apart in greyscale print.
 std::string reference_slope_style(std::size_t k);
 
+// The k-th data series' colour: ten dark colours before they repeat (gnuplot's own eight
+// repeat sooner, and its fifth, a pale yellow, hides a thin curve on white).
+std::string series_colour(std::size_t k);
+
 struct Figure {
   std::string title, xlabel, ylabel;
   bool log_x = false, log_y = false;
