@@ -7,6 +7,7 @@
 #include "common/study/convergence_study.hpp"
 #include "common/contact/pressure_norms.hpp"
 #include "common/fem/quadrature.hpp"
+#include "hertz_best_approximation.hpp"
 
 using namespace mortar;
 
@@ -219,4 +220,25 @@ TEST(PressureNorms, interpolant_of_a_linear_pressure_has_the_norms_computed_by_h
   EXPECT_NEAR(e.hminus, std::sqrt(0.25 / 96), 1e-14);
   EXPECT_NEAR(e.norm_l2, std::sqrt(1.0 / 3), 1e-14);
   EXPECT_LE(e.best_l2, e.l2);
+}
+
+// The edge of a contact zone: p(x) = sqrt(1 - ((x - x0)/a)^2) on |x - x0| < a, 0 outside (Hertz's
+// shape), with both edges inside elements, against its best approximation in M_h^1 computed in
+// closed form (hertz_best_approximation.hpp). A rule that does not cut at the edges integrates
+// a square root across them and is off in the fourth digit.
+TEST(PressureNorms, best_approximation_of_a_square_root_edge_matches_its_closed_form) {
+  const double x0 = 0.5, a = std::sqrt(2.0) / 6;  // edges 0.264 and 0.736, never nodes
+  const auto p = [&](double x) { return std::fabs(x - x0) < a ? std::sqrt(1 - std::pow((x - x0) / a, 2)) : 0.0; };
+  for (int n : {10, 40, 160}) {
+    const ContactInterface g = interface_of(n);
+    const double norm = std::sqrt(4 * a / 3), best = norm * hertz_best::relative_best_error(1.0, n, x0, a);
+    const InterfaceCurve zero{g.nonmortar_trace.x, std::vector<double>(n + 1, 0.0)};
+    const PressureErrors cut = pressure_errors(g, zero, p, {x0 - a, x0 + a});
+    EXPECT_NEAR(cut.norm_l2, norm, 1e-12) << n;
+    EXPECT_NEAR(cut.l2, norm, 1e-12) << n;  // the error of the zero curve is p itself
+    EXPECT_NEAR(cut.best_l2, best, 1e-9 * best) << n;
+    // without the edges the same rule misstates the best error, far beyond these tolerances
+    const PressureErrors uncut = pressure_errors(g, zero, p);
+    EXPECT_GT(std::fabs(uncut.best_l2 - best), 1e-6 * best) << n;
+  }
 }

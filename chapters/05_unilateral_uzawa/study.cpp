@@ -254,7 +254,7 @@ mortar::Row level_row(const Options& o, const UnilateralLevel& r, const Referenc
     const auto u1_y = [&](double x) { return exact.u(0, {x, 0.0}).y(); };
     // the multiplier in its own norms (common/contact/pressure_norms.hpp): L2, the mesh-dependent
     // H^{-1/2} norm, and the L2 best approximation in M_h^1 beside them
-    const mortar::PressureErrors pe = mortar::pressure_errors(r.gamma, r.pressure, p);
+    const mortar::PressureErrors pe = mortar::pressure_errors(r.gamma, r.pressure, p, exact.pressure_kinks());
     row.push_back({"err_energy", norms.relative_energy()});
     row.push_back({"err_energy_interpolant", interpolant.relative_energy()});
     row.push_back({"err_l2", norms.relative_l2()});

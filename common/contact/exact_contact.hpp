@@ -29,6 +29,9 @@ class ExactContact {
   // Vertical lines x = b across which the body force jumps (the load is integrated on each side)
   virtual std::vector<double> body_force_breaks() const { return {}; }
   virtual double pressure(double x) const = 0;  // p = -sigma_N on Gamma_c
+  // The points of Gamma_c where p is not smooth (the edges of a contact zone, where p behaves
+  // like a square root): a quadrature of p must cut there or lose its order
+  virtual std::vector<double> pressure_kinks() const { return {}; }
   // int_0^L p: 8-point Gauss on 64 pieces unless a kind knows it in closed form
   virtual double total_force(double L) const;
 

@@ -40,6 +40,7 @@ class HertzHalfPlanes : public ExactContact {
   Eigen::Vector2d body_force(int, const Eigen::Vector2d&) const override { return Eigen::Vector2d::Zero(); }
   bool has_body_force() const override { return false; }
   double pressure(double x) const override;
+  std::vector<double> pressure_kinks() const override { return {x0_ - a_, x0_ + a_}; }
   double total_force(double) const override;  // pi a p0 / 2, whatever the length of Gamma_c
 
   double gap(double x) const;  // the initial gap (x - x0)^2 / (2R)

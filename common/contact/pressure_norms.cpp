@@ -14,26 +14,45 @@
 namespace mortar {
 
 namespace {
-// Each piece of an element gets a 5-point Gauss rule, and each element is cut into 4 pieces
-// (and at every breakpoint of p_h inside it): p may have a kink (a contact point) or a C^2
-// point inside an element, where one rule per element would lose its order.
+// Each piece of an element gets a 5-point Gauss rule, and each element is cut into 4 pieces,
+// and at every breakpoint of p_h and every kink of p inside it. Next to a kink (the edge of a
+// contact zone, where p behaves like sqrt(|x - k|)) the variable x = k +- d s^2 turns the square
+// root into a smooth function of s, so the rule keeps its order there too.
 constexpr int pieces_per_element = 4;
 constexpr int gauss_points = 5;
 
-// Calls add(x, w) for the points x and weights w of a composite rule on [a, b], cut at the
-// given interior points.
+// Calls add(x, w) for a rule on [left, right]; a kink at one end is graded away by x = k +- d s^2.
 template <class Add>
-void composite_rule(double a, double b, std::vector<double> cuts, const Add& add) {
+void graded_rule(double left, double right, bool kink_left, bool kink_right, const Add& add) {
   static const SegmentRule rule = gauss_legendre(gauss_points);
+  if (kink_left && kink_right) {
+    const double middle = 0.5 * (left + right);
+    graded_rule(left, middle, true, false, add);
+    graded_rule(middle, right, false, true, add);
+    return;
+  }
+  const double d = right - left, h = 1.0 / pieces_per_element;
+  for (int piece = 0; piece < pieces_per_element; ++piece)
+    for (std::size_t q = 0; q < rule.points.size(); ++q) {
+      const double t = (piece + rule.points[q]) * h, w = rule.weights[q] * h;  // t in (0, 1)
+      if (kink_left)
+        add(left + d * t * t, 2 * d * t * w);
+      else if (kink_right)
+        add(right - d * t * t, 2 * d * t * w);
+      else
+        add(left + d * t, d * w);
+    }
+}
+
+// Calls add(x, w) for the points x and weights w of a composite rule on [a, b], cut at the given
+// interior points, of which those in the sorted list kinks are kinks of the integrand.
+template <class Add>
+void composite_rule(double a, double b, std::vector<double> cuts, const std::vector<double>& kinks, const Add& add) {
   cuts.insert(cuts.begin(), a);
   cuts.push_back(b);
-  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-    const double h = (cuts[k + 1] - cuts[k]) / pieces_per_element;
-    for (int piece = 0; piece < pieces_per_element; ++piece) {
-      const double left = cuts[k] + piece * h;
-      for (std::size_t q = 0; q < rule.points.size(); ++q) add(left + rule.points[q] * h, rule.weights[q] * h);
-    }
-  }
+  const auto is_kink = [&](double x) { return std::binary_search(kinks.begin(), kinks.end(), x); };
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+    graded_rule(cuts[k], cuts[k + 1], is_kink(cuts[k]), is_kink(cuts[k + 1]), add);
 }
 
 // p_h between its points, P1 or P2 (contact_fields.hpp); its piece ends strictly inside (a, b).
@@ -49,12 +68,31 @@ struct CurveReader {
     const std::size_t e = std::clamp<std::size_t>(static_cast<std::size_t>(it - ends.begin()), 1, ends.size() - 1) - 1;
     return curve.at(static_cast<int>(e), (x - ends[e]) / (ends[e + 1] - ends[e]));
   }
-  std::vector<double> breakpoints_inside(double a, double b) const {
-    const auto first = std::upper_bound(ends.begin(), ends.end(), a);
-    const auto last = std::lower_bound(ends.begin(), ends.end(), b);
+  std::vector<double> breakpoints_inside(double a, double b) const { return points_inside(ends, a, b); }
+
+  // the points of a sorted list strictly inside (a, b)
+  static std::vector<double> points_inside(const std::vector<double>& sorted, double a, double b) {
+    const auto first = std::upper_bound(sorted.begin(), sorted.end(), a);
+    const auto last = std::lower_bound(sorted.begin(), sorted.end(), b);
     return first < last ? std::vector<double>(first, last) : std::vector<double>{};
   }
 };
+
+// The cuts of element (a, b): the breakpoints of p_h and the kinks of p inside it, in order
+std::vector<double> cuts_inside(const CurveReader& reader, const std::vector<double>& sorted_kinks, double a,
+                                double b) {
+  std::vector<double> cuts = reader.breakpoints_inside(a, b);
+  const std::vector<double> kinks = CurveReader::points_inside(sorted_kinks, a, b);
+  cuts.insert(cuts.end(), kinks.begin(), kinks.end());
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  return cuts;
+}
+
+std::vector<double> sorted(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
 
 void check_curve(const InterfaceCurve& c, const InterfaceTrace& t) {
   if (c.x.size() < 2 || c.x.size() != c.value.size() || (c.x.size() - 1) % c.degree != 0)
@@ -80,13 +118,13 @@ struct ElementSquares {
   std::vector<double> squares;
 };
 ElementSquares element_squares(const InterfaceTrace& t, const InterfaceCurve& p_h,
-                               const std::function<double(double)>& p) {
+                               const std::function<double(double)>& p, const std::vector<double>& kinks) {
   const CurveReader reader{p_h};
   std::vector<std::vector<std::pair<double, double>>> points(static_cast<std::size_t>(t.num_elements()));
   ElementSquares s;
   bool nan = false;
   for (int e = 0; e < t.num_elements(); ++e)
-    composite_rule(t.x[e], t.x[e + 1], reader.breakpoints_inside(t.x[e], t.x[e + 1]), [&](double x, double w) {
+    composite_rule(t.x[e], t.x[e + 1], cuts_inside(reader, kinks, t.x[e], t.x[e + 1]), kinks, [&](double x, double w) {
       const double d = p(x) - reader(x);
       nan = nan || std::isnan(d);
       s.scale = std::max(s.scale, std::fabs(d));
@@ -123,8 +161,10 @@ SplitNorms split_norms(const InterfaceTrace& t, const ElementSquares& error) {
 }
 }  // namespace
 
-InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p) {
+InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p,
+                             const std::vector<double>& kinks) {
   const InterfaceTrace& t = gamma.nonmortar_trace;
+  const std::vector<double> sorted_kinks = sorted(kinks);
   const auto& C = gamma.space.C;
   if (C.cols() != t.num_dofs())
     throw std::invalid_argument("l2_projection: M_h has " + std::to_string(C.cols()) + " trace nodes, the trace " +
@@ -134,7 +174,8 @@ InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<
   const int q = t.degree;
   for (int e = 0; e < t.num_elements(); ++e) {
     const double h = t.x[e + 1] - t.x[e];
-    composite_rule(t.x[e], t.x[e + 1], {}, [&](double x, double w) {
+    composite_rule(t.x[e], t.x[e + 1], CurveReader::points_inside(sorted_kinks, t.x[e], t.x[e + 1]), sorted_kinks,
+                   [&](double x, double w) {
       const std::array<double, 3> phi = lagrange_1d(q, (x - t.x[e]) / h);
       for (int l = 0; l <= q; ++l) load[q * e + l] += w * phi[l] * p(x);
     });
@@ -152,13 +193,14 @@ InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<
 }
 
 PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCurve& p_h,
-                               const std::function<double(double)>& p) {
+                               const std::function<double(double)>& p, const std::vector<double>& kinks) {
   const InterfaceTrace& t = gamma.nonmortar_trace;
   check_curve(p_h, t);
-  const SplitNorms computed = split_norms(t, element_squares(t, p_h, p));
-  const SplitNorms best = split_norms(t, element_squares(t, l2_projection(gamma, p), p));
+  const std::vector<double> k = sorted(kinks);
+  const SplitNorms computed = split_norms(t, element_squares(t, p_h, p, k));
+  const SplitNorms best = split_norms(t, element_squares(t, l2_projection(gamma, p, k), p, k));
   const InterfaceCurve zero{t.x, std::vector<double>(t.x.size(), 0.0), 1};
-  const SplitNorms size = split_norms(t, element_squares(t, zero, p));
+  const SplitNorms size = split_norms(t, element_squares(t, zero, p, k));
 
   PressureErrors r;
   r.l2 = computed.whole;

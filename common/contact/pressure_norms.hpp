@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "common/contact/constraints.hpp"
 #include "common/contact/contact_fields.hpp"
@@ -30,12 +31,16 @@ struct PressureErrors {
   // (sum_e h_e ||p||^2_e)^{1/2} shrinks like h^{1/2} and, as a divisor, would hide a rate.
   double norm_l2 = 0, norm_hminus = 0;
 };
+// kinks: the points where p is not smooth (ExactContact::pressure_kinks, the edges x0 +- a of a
+// Hertz zone). Every integral is cut there and at every breakpoint of p_h: a Gauss rule across a
+// square-root edge converges like h^{3/2} only, and misstates an error of order h^{3/2} itself.
 PressureErrors pressure_errors(const ContactInterface& gamma, const InterfaceCurve& p_h,
-                               const std::function<double(double)>& p);
+                               const std::function<double(double)>& p, const std::vector<double>& kinks = {});
 
 // Pi_h p: the L2(Gamma_c) projection of p onto M_h^1 = span{psi_i} (gamma.space on
 // gamma.nonmortar_trace), as nodal values on the non-mortar trace. Solves
 // (C M_phi C^T) c = C (int p phi_j)_j, M_phi the P1 mass matrix of the trace.
-InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p);
+InterfaceCurve l2_projection(const ContactInterface& gamma, const std::function<double(double)>& p,
+                             const std::vector<double>& kinks = {});
 
 }  // namespace mortar
