@@ -28,10 +28,20 @@ std::vector<mortar::MemoryPart> hertz_memory_parts(const mortar::BilateralStudyO
 
 std::string basis_name(Basis basis) { return basis == Basis::dual ? "dual" : "standard"; }
 
+// The Hertz part is driven by the plates' displacement delta: u does not depend on the unit of
+// E, and the multipliers are proportional to it. The solvers work on S = B K^-1 B^T, of order
+// 1/E, whose squares leave the range of double beyond E ~ 1e+-150; so each level is solved with
+// the moduli divided by the power of two nearest the larger one (an exact division), and the
+// multipliers are multiplied back.
+double modulus_unit(const mortar::TwoBodyOptions& b) {
+  return std::exp2(std::round(std::log2(std::max(b.E1, b.E2))));
+}
+
 HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, const HertzLevel* coarser) {
   const mortar::TwoBodyGeometry geometry = mortar::two_body_geometry(o.bodies, o.n0 << level, 1.0);
-  const mortar::TwoBodies bodies = mortar::make_two_bodies(geometry, mortar::Material(o.bodies.E1, o.bodies.nu1),
-                                                           mortar::Material(o.bodies.E2, o.bodies.nu2));
+  const double unit = modulus_unit(o.bodies);
+  const mortar::TwoBodies bodies = mortar::make_two_bodies(geometry, mortar::Material(o.bodies.E1 / unit, o.bodies.nu1),
+                                                           mortar::Material(o.bodies.E2 / unit, o.bodies.nu2));
   const double L = o.bodies.L, R = o.R;
   const auto gap = [L, R](double x) { return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R); };
   HertzLevel r;
@@ -105,6 +115,7 @@ HertzLevel solve_hertz_level(const HertzOptions& o, int level, Basis basis, cons
 
   // 6. What the multipliers say: the coefficients at their nodes, the function they make, the
   //    total force int lambda_h = sum_i lambda_i int psi_i (the same int psi_i for both bases).
+  lambda *= unit;  // back to the moduli given
   r.multipliers = static_cast<int>(lambda.size());
   r.active_sets.label = basis == Basis::dual ? "dual basis, semismooth Newton" : "standard basis, active set on S";
   for (int node : constraints.row_node) r.active_sets.x.push_back(gamma.nonmortar_trace.x[node]);
