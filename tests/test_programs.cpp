@@ -565,6 +565,23 @@ TEST(Programs, a_run_larger_than_memory_is_refused_before_it_starts) {
 
 // Beyond a stiffness ratio of 1e10 the solvers called the matrix singular (the LU from 1e11,
 // CHOLMOD at 1e14) after the run had started: now refused at once, naming the option given.
+// Bodies one cell thick along a Gamma_c of 4096 elements: the sparse solve of K takes 0.02 s,
+// the dense blocks on Gamma_c some 4e11 operations (237 s, 4517 times the physical limit, with
+// no word before). The estimate is printed before any work: within the first seconds, and not
+// for the same bodies on a Gamma_c a quarter as long (about 1/60 of the work).
+TEST(Programs, ch04_announces_minutes_of_dense_work_on_gamma_c_before_it_starts) {
+  const std::string dir = out_dir("ch04_long_run"), thin = " --H1 0.000244140625 --H2 0.000244140625";
+  const ProgramRun r = run("timeout 5 " + std::string(CH04) + " --n0 1024 --levels 3" + thin + " --no-plot --out " + dir);
+  EXPECT_NE(r.output.find("warning: the finest level's dense blocks on Gamma_c (schur solver, 4095 multipliers, "
+                          "2732 mortar nodes) need about 4.3e+11 floating-point operations"),
+            std::string::npos)
+      << r.output;
+  const ProgramRun small = run(std::string(CH04) + " --n0 256 --levels 3 --H1 0.0009765625 --H2 0.0009765625 "
+                               "--no-plot --out " + dir);
+  EXPECT_EQ(small.status, 0) << small.output;
+  EXPECT_EQ(small.output.find("floating-point operations"), std::string::npos) << small.output;
+}
+
 TEST(Programs, stiffness_ratios_beyond_1e10_are_refused_before_any_work) {
   const std::string dir = out_dir("stiffness_ratio");
   for (const char* program : {CH03, CH04, CH05, CH06, CH07, CH08})

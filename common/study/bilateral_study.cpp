@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "common/linalg/memory_estimate.hpp"
+#include "common/linalg/work_estimate.hpp"
 #include "common/timing/stopwatch.hpp"
 #include "common/study/timing_report.hpp"
 #include "common/study/two_body_pictures.hpp"
@@ -110,6 +111,25 @@ void check_stiffness_ratio(const OptionParser& parser, const TwoBodyOptions& o) 
   parser.fail(one_given ? (parser.given("E1") ? "E1" : "E2") : (ratio > 1 ? "E1" : "E2"), message);
 }
 
+namespace {
+// Announces, before any work, a run whose dense blocks on Gamma_c will take minutes
+// (work_estimate.hpp): bodies a few cells thick along a long Gamma_c, where the physical limit
+// (one sparse Cholesky factorization of K) is a hundredth of a second.
+void warn_of_a_long_run(const BilateralStudyOptions& o) {
+  const FinestSize size = finest_size(o);
+  const double n_nonmortar = o.nonmortar == 1 ? size.n1 : size.n2, n_mortar = o.nonmortar == 1 ? size.n2 : size.n1;
+  const double m = size.q * n_nonmortar - 1, t = size.q * n_mortar + 1;
+  char what[160];
+  std::snprintf(what, sizeof what, "the finest level's dense blocks on Gamma_c (%s solver, %.0f multipliers, %.0f mortar nodes)",
+                o.saddle_solver.c_str(), m, t);
+  const std::string warning = long_run_warning(dense_block_flops(o.saddle_solver, m, t), what);
+  if (warning.empty()) return;
+  std::printf("%s; their cost grows like the cube of the nodes on Gamma_c: fewer --levels, a smaller --n0 or "
+              "thicker bodies (--H1, --H2) give the same rates sooner\n", warning.c_str());
+  std::fflush(stdout);  // seen before the work starts, even through a pipe
+}
+}  // namespace
+
 void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int argc, char** argv,
                              const MoreMemoryParts& more_parts) {
   parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 16));
@@ -147,6 +167,7 @@ void parse_bilateral_options(OptionParser& parser, BilateralStudyOptions& o, int
   }
   const std::string memory = memory_shortfall(parts, machine_memory());
   if (!memory.empty()) parser.fail("levels", memory);
+  warn_of_a_long_run(o);
   prepare_output_folder(parser, o.out);
   note_nearly_incompressible(o);
 }
