@@ -115,6 +115,7 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
       s.u = system.expand(s.solution.u);
       options.previous_slip = s.solution.w_t;
       options.start = s.solution.nodes;
+      options.fixed_point_start = setup.friction * s.solution.lambda_n.cwiseMax(0.0);  // the last step's F p
       for (auto& n : options.start) n.dw_t = 0;
       // 8. What the step says on Gamma_c.
       s.pressure = mortar::contact_pressure(r.gamma, r.normal, s.solution.lambda_n);
