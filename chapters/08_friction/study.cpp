@@ -199,6 +199,7 @@ std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const Friction
     c.q_ratio = c.P > 0 ? c.Q / (o.friction * c.P) : 0.0;
     c.newton_steps = s.newton_steps;
     c.lu_steps = s.solution.lu_steps;
+    c.limit_ratio = r.limit_s > 0 ? s.time_s / r.limit_s : 0.0;
     for (mortar::NodeStatus st : s.solution.status) {
       c.stick_nodes += st == mortar::NodeStatus::stick;
       c.slip_nodes += st == mortar::NodeStatus::slip;
@@ -249,12 +250,12 @@ mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last) {
 void write_cattaneo_csv(const std::string& path, const std::vector<CattaneoStep>& steps) {
   std::ofstream out(path);
   out << "step,P,Q,q_ratio,c,c_h,shear_rel_error_l2,pressure_change_rel_l2,hertz_pressure_rel_error_l2,"
-         "newton_steps,lu_steps,stick_nodes,slip_nodes\n";
+         "newton_steps,lu_steps,stick_nodes,slip_nodes,limit_ratio\n";
   char line[400];
   for (const CattaneoStep& c : steps) {
-    std::snprintf(line, sizeof line, "%d,%.10g,%.10g,%.6f,%.8g,%.8g,%.6g,%.6g,%.6g,%d,%d,%d,%d\n", c.step, c.P, c.Q,
-                  c.q_ratio, c.c, c.c_h, c.shear_rel_error_l2, c.pressure_change_rel_l2, c.hertz_pressure_rel_error_l2,
-                  c.newton_steps, c.lu_steps, c.stick_nodes, c.slip_nodes);
+    std::snprintf(line, sizeof line, "%d,%.10g,%.10g,%.6f,%.8g,%.8g,%.6g,%.6g,%.6g,%d,%d,%d,%d,%.4g\n", c.step, c.P,
+                  c.Q, c.q_ratio, c.c, c.c_h, c.shear_rel_error_l2, c.pressure_change_rel_l2,
+                  c.hertz_pressure_rel_error_l2, c.newton_steps, c.lu_steps, c.stick_nodes, c.slip_nodes, c.limit_ratio);
     out << line;
   }
   if (!out) throw std::runtime_error("cannot write " + path);

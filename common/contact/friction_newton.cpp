@@ -127,6 +127,24 @@ Residual residual_of(const std::vector<NodalUnknowns>& x, const std::vector<Noda
 
 }  // namespace
 
+Eigen::VectorXd FrictionFactorizations::solve(const SparseMatrix& J, const Eigen::VectorXd& b, bool symmetric,
+                                              int& lu_steps) {
+  if (symmetric) {
+    try {
+      if (spd_ready_) spd_.refactorize(J);
+      else spd_.factorize(J);
+      spd_ready_ = true;
+      return spd_.solve(b);
+    } catch (const std::runtime_error&) {
+      spd_ready_ = false;  // not positive definite: the LU below takes it
+    }
+  }
+  const ProfilePhase phase("frictional Newton: sparse LU");
+  lu_.refactorize(J);
+  ++lu_steps;
+  return lu_.solve(b);
+}
+
 NodalUnknowns nodal_unknowns(const CondensedContact& c, const Eigen::VectorXd& v, int node, double previous_slip) {
   const int m = c.rows() / 2, pn = c.pivots[node], pt = c.pivots[m + node];
   NodalUnknowns x;
@@ -249,37 +267,6 @@ NewtonSystem newton_system(const NewtonProblem& p, const std::vector<PivotRow>& 
   return s;
 }
 
-// The solves of one frictional problem: Cholesky (CHOLMOD) while the rows keep A's symmetry,
-// sparse LU (UMFPACK) when a Coulomb row breaks it, or when the symmetric matrix is not
-// positive definite (a negative shift of a slip row). Each keeps its analysis from step to
-// step: the matrix's pattern is always the same.
-class NewtonSolves {
- public:
-  explicit NewtonSolves(SpdBackend backend) : spd_(backend) {}
-
-  Eigen::VectorXd solve(const NewtonSystem& s, int& lu_steps) {
-    if (s.symmetric) {
-      try {
-        if (spd_ready_) spd_.refactorize(s.J);
-        else spd_.factorize(s.J);
-        spd_ready_ = true;
-        return spd_.solve(s.b);
-      } catch (const std::runtime_error&) {
-        spd_ready_ = false;  // not positive definite: the LU below takes it
-      }
-    }
-    const ProfilePhase phase("frictional Newton: sparse LU");
-    lu_.refactorize(s.J);
-    ++lu_steps;
-    return lu_.solve(s.b);
-  }
-
- private:
-  SpdSolver spd_;
-  bool spd_ready_ = false;
-  SparseLu lu_;
-};
-
 // How a run of Newton steps ended.
 struct Attempt {
   bool converged = false;
@@ -298,7 +285,7 @@ std::vector<NodeStatus> statuses(const NewtonProblem& p, const std::vector<Nodal
 // At most max_steps Newton steps from the linearization point x, each recorded in sol. Stops
 // early when the statuses cycle, or when ten steps in a row bring no smaller residual.
 Attempt newton_steps(const NewtonProblem& p, std::vector<NodalUnknowns> x, int max_steps, double tolerance,
-                     NewtonSolves& solves, FrictionSolution& sol) {
+                     FrictionFactorizations& solves, FrictionSolution& sol) {
   const CondensedContact& c = p.c;
   const int m = p.nodes();
   Attempt a;
@@ -306,7 +293,8 @@ Attempt newton_steps(const NewtonProblem& p, std::vector<NodalUnknowns> x, int m
   double best = std::numeric_limits<double>::infinity();
   int best_step = 0;
   for (int step = 1; step <= max_steps; ++step) {
-    a.v = solves.solve(newton_system(p, nodal_rows(p, x)), sol.lu_steps);
+    const NewtonSystem system = newton_system(p, nodal_rows(p, x));
+    a.v = solves.solve(system.J, system.b, system.symmetric, sol.lu_steps);
     ++sol.steps;
     std::vector<double> round_off(static_cast<std::size_t>(m));
     for (int i = 0; i < m; ++i) {
@@ -357,11 +345,12 @@ FrictionSolution solve_frictional_contact(const CondensedContact& c, const Frict
   const std::vector<NodalUnknowns> start = o.start.empty() ? std::vector<NodalUnknowns>(static_cast<std::size_t>(m)) : o.start;
 
   const NewtonProblem problem = newton_problem(c, o.law, o.friction, o.threshold, previous, o.bounded_gradient);
-  NewtonSolves solves(o.backend);
+  const std::shared_ptr<FrictionFactorizations> solves =
+      o.factorizations ? o.factorizations : std::make_shared<FrictionFactorizations>(o.backend);
   FrictionSolution sol;
   Attempt a;
   try {
-    a = newton_steps(problem, start, o.max_steps, o.tolerance, solves, sol);
+    a = newton_steps(problem, start, o.max_steps, o.tolerance, *solves, sol);
   } catch (const std::runtime_error&) {
     // a singular step (a body held in x by friction alone, every node slipping): the restart below
   }
@@ -373,10 +362,10 @@ FrictionSolution solve_frictional_contact(const CondensedContact& c, const Frict
     // no-slip solution the law has only to release the nodes that slip.
     const Eigen::VectorXd no_slip = Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
     const NewtonProblem stuck = newton_problem(c, FrictionLaw::tresca, 0.0, no_slip, previous, o.bounded_gradient);
-    const Attempt glued = newton_steps(stuck, start, o.max_steps, o.tolerance, solves, sol);
+    const Attempt glued = newton_steps(stuck, start, o.max_steps, o.tolerance, *solves, sol);
     if (!glued.converged) throw std::runtime_error(failure_message(glued, sol, o.tolerance));
     ++sol.restarts;
-    a = newton_steps(problem, glued.x, o.max_steps, o.tolerance, solves, sol);
+    a = newton_steps(problem, glued.x, o.max_steps, o.tolerance, *solves, sol);
     if (!a.converged) throw std::runtime_error(failure_message(a, sol, o.tolerance));
   }
 

@@ -25,11 +25,13 @@
 // largest multiplier, or c times the largest weighted gap or slip) fall below the tolerance.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/contact/dual_condensation.hpp"
 #include "common/contact/friction_conditions.hpp"
+#include "common/linalg/sparse_lu.hpp"
 
 namespace mortar {
 
@@ -37,6 +39,24 @@ namespace mortar {
 // the x dofs; their G is the slip offset, zero) as one problem: B = [B_n; B_t], pivots
 // [y pivots; x pivots]. Throws when the two sets of rows are not on the same nodes.
 SaddlePointProblem stack_frictional_rows(const SaddlePointProblem& p, const SaddlePointProblem& t);
+
+// The factorizations of the Newton matrices: Cholesky (CHOLMOD) while a step's rows keep A's
+// symmetry, sparse LU (UMFPACK) when a Coulomb row breaks it or the symmetric matrix is not
+// positive definite (a negative shift of a slip row). The Newton matrix of a condensed problem
+// always has the same pattern (explicit zeros hold unused places), so each keeps its analysis
+// from one Newton step to the next, and, passed through FrictionOptions, from one load step to
+// the next.
+class FrictionFactorizations {
+ public:
+  explicit FrictionFactorizations(SpdBackend backend = fastest_spd_backend()) : spd_(backend) {}
+  // Solves J v = b; counts the LU solves in lu_steps.
+  Eigen::VectorXd solve(const SparseMatrix& J, const Eigen::VectorXd& b, bool symmetric, int& lu_steps);
+
+ private:
+  SpdSolver spd_;
+  bool spd_ready_ = false;
+  SparseLu lu_;
+};
 
 struct FrictionOptions {
   FrictionLaw law = FrictionLaw::coulomb;
@@ -49,6 +69,9 @@ struct FrictionOptions {
   int max_steps = 50;
   double tolerance = 1e-12;
   SpdBackend backend = fastest_spd_backend();
+  // Kept between calls on the same condensed problem (the load steps of a level); empty: one
+  // for this call.
+  std::shared_ptr<FrictionFactorizations> factorizations;
 };
 
 struct FrictionSolution {
