@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "common/contact/friction_conditions.hpp"
 
@@ -115,4 +116,54 @@ TEST(FrictionConditions, the_bounded_gradient_differs_only_where_lambda_t_exceed
   EXPECT_NE(c.lambda_t, d.lambda_t);
   // as if lambda_t = s: d C_t / d dw_t = c_t (sign(z) lambda_t - s) = 0
   EXPECT_NEAR(c.dw_t, 0.0, 1e-15);
+}
+
+// The law (README.md, "The problem"): |lambda_t| < s is stick, |lambda_t| = s is slip with a
+// rate alpha lambda_t, alpha >= 0, zero included. A node in contact with z = lambda_t + c_t dw_t
+// exactly on the threshold has, where C_t = 0, lambda_t = z and dw_t = 0: its shear equals its
+// threshold, so the law puts it among the slipping nodes, however little it moves.
+TEST(FrictionConditions, a_shear_exactly_at_its_threshold_slips_by_the_law) {
+  const NodalUnknowns on_threshold{1.0, 0.0, 0.5, 0.0};  // s = F lambda_n = 0.5 = |z|, exactly
+  for (const NodalLaw& law : {coulomb(0.5), tresca(0.5)}) {
+    ASSERT_EQ(friction_threshold(on_threshold, law), 0.5);
+    EXPECT_EQ(node_status(on_threshold, law), NodeStatus::slip);
+    EXPECT_EQ(tangential_function(on_threshold, law), 0.0);  // the law holds there
+    const NodalUnknowns negative{1.0, 0.0, -0.5, 0.0};
+    EXPECT_EQ(node_status(negative, law), NodeStatus::slip);
+    // just inside the threshold it sticks
+    EXPECT_EQ(node_status({1.0, 0.0, 0.4999, 0.0}, law), NodeStatus::stick);
+  }
+}
+
+// The stopping test's nodal residuals are in the unit of the multipliers: a slip node's
+// tangential residual over its size is the relative distance of |lambda_t| from s, and scaling
+// every multiplier and c by the same factor (a change of the unit of E) scales residual and
+// size alike.
+TEST(FrictionConditions, nodal_residuals_are_relative_to_the_node_and_free_of_the_unit_of_E) {
+  const NodalUnknowns slip{1.0, 0.0, 0.49, 0.1};  // z = 0.49 + 3 x 0.1 > s = 0.5
+  ASSERT_EQ(node_status(slip, coulomb(0.5)), NodeStatus::slip);
+  const NodalResidual r = nodal_residual(slip, coulomb(0.5));
+  EXPECT_NEAR(r.tangential / r.tangential_size, (0.49 - 0.5) / 0.5, 1e-15);
+  for (double E : {1e-100, 1e100}) {
+    NodalLaw law = coulomb(0.5);
+    law.c_n *= E;
+    law.c_t *= E;
+    const NodalUnknowns scaled{E * slip.lambda_n, slip.w_n, E * slip.lambda_t, slip.dw_t};
+    const NodalResidual s = nodal_residual(scaled, law);
+    EXPECT_NEAR(s.tangential / s.tangential_size, r.tangential / r.tangential_size, 1e-14) << "E = " << E;
+    EXPECT_NEAR(s.normal_size / E, r.normal_size, 1e-14) << "E = " << E;
+  }
+}
+
+// An infinite Tresca threshold forbids slip on every node, in contact or not: the tangential
+// row is dw_t = 0 (the no-slip start of friction_newton.cpp).
+TEST(FrictionConditions, an_infinite_threshold_forbids_slip_everywhere) {
+  const NodalLaw law = tresca(std::numeric_limits<double>::infinity());
+  for (const NodalUnknowns& x : {NodalUnknowns{1.0, 0.0, 5.0, 0.2}, NodalUnknowns{0.0, -0.3, 0.0, 0.2}}) {
+    EXPECT_DOUBLE_EQ(tangential_function(x, law), -3.0 * 0.2);
+    const NodalGradient g = tangential_gradient(x, law);
+    EXPECT_EQ(g.dw_t, -3.0);
+    EXPECT_EQ(g.lambda_t, 0.0);
+  }
+  EXPECT_EQ(node_status({1.0, 0.0, 1e300, 0.0}, law), NodeStatus::stick);
 }

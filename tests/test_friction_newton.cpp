@@ -45,13 +45,13 @@ struct Problem {
 
 // Chapter 5's Hertz-like scene on the dual basis: two blocks pressed by delta over the gap
 // (x - 1/2)^2 / 2, materials E1 = 1 and E2 (E2 != E1: the normal load alone makes a shear).
-Problem pressed(int n1, double ratio, double E2, double delta = 0.02) {
+Problem pressed(int n1, double ratio, double E2, double delta = 0.02, double E1 = 1) {
   TwoBodyGeometry g;
   g.n1 = g.m1 = n1;
   g.n2 = g.m2 = std::max(2, static_cast<int>(std::lround(n1 / ratio)));
   g.H1 = g.H2 = 1;
   g.jitter = 0.2;
-  TwoBodies bodies = make_two_bodies(g, Material(1, 0.3), Material(E2, 0.3));
+  TwoBodies bodies = make_two_bodies(g, Material(E1, 0.3), Material(E2, 0.3));
   const SceneData scene = pressed_between_plates(bodies, delta);
   const std::vector<bool> mask = scene.prescribed_mask(bodies.num_dofs());
   const ContactInterface gamma = make_dual_interface(bodies, 0);
@@ -161,12 +161,15 @@ TEST(FrictionNewton, huge_friction_glues_the_bodies_where_they_touch) {
   EXPECT_LT(relative(x.u, reference.u), 1e-9);
 }
 
+// The fixed point stops when the thresholds change by less than 1e-10 of themselves: its answer
+// is then Newton's to a few times that, whatever the unit of the multipliers (E1 = 1e-3 here:
+// an absolute test on the change would stop far earlier).
 TEST(FrictionNewton, coulomb_by_fixed_point_on_tresca_thresholds_is_the_same_answer) {
-  const Problem p = pressed(16, 1.5, 3.0);
+  const Problem p = pressed(16, 1.5, 3e-3, 0.02, 1e-3);
   const CondensedContact c = condense_contact(p.frictional);
   const FrictionSolution newton = solve_frictional_contact(c, coulomb(0.2));
   const FixedPointSolution fixed = solve_coulomb_by_fixed_point(c, coulomb(0.2));
-  EXPECT_LT(relative(fixed.last.u, newton.u), 1e-8);
+  EXPECT_LT(relative(fixed.last.u, newton.u), 1e-11);
   EXPECT_GT(fixed.outer, 1);
   int slipping = 0;
   for (NodeStatus s : newton.status) slipping += s == NodeStatus::slip;
@@ -198,4 +201,35 @@ TEST(FrictionNewton, zero_friction_on_the_manufactured_scene_is_chapter_6s_answe
       condense_contact(stack_frictional_rows(normal, reduce_to_free_dofs(system, ct, zero))), coulomb(0.0));
   EXPECT_LT(relative(x.u, reference.u), 1e-10);
   EXPECT_LT(relative(x.lambda_n, reference.lambda), 1e-10);
+}
+
+// At convergence every slip node's shear is its threshold to the tolerance relative to that
+// threshold, small pressures included: a test scaled by the largest multiplier passed with slip
+// nodes near the contact edge still far from their threshold.
+TEST(FrictionNewton, every_slip_node_holds_its_own_threshold_at_convergence) {
+  const Problem p = pressed(64, 1.5, 3.0, 0.06);
+  const FrictionSolution x = solve_frictional_contact(condense_contact(p.frictional), coulomb(0.05));
+  int slipping = 0;
+  for (std::size_t i = 0; i < x.status.size(); ++i) {
+    if (x.status[i] != NodeStatus::slip) continue;
+    ++slipping;
+    const double s = 0.05 * x.lambda_n[i];
+    EXPECT_LT(std::fabs(std::fabs(x.lambda_t[i]) - s), 1e-10 * s) << "node " << i << " of pressure " << x.lambda_n[i];
+  }
+  ASSERT_GT(slipping, 3);
+}
+
+// Nothing in the method may depend on the unit of E: E1 = E2 / 3 = 1e-100, 1 and 1e100 give the
+// same displacements, multipliers over E and Newton steps.
+TEST(FrictionNewton, the_answer_does_not_depend_on_the_unit_of_E) {
+  const Problem unit = pressed(16, 1.5, 3.0);
+  const FrictionSolution reference = solve_frictional_contact(condense_contact(unit.frictional), coulomb(0.3));
+  for (double E : {1e-100, 1e100}) {
+    const Problem p = pressed(16, 1.5, 3.0 * E, 0.02, E);
+    const FrictionSolution x = solve_frictional_contact(condense_contact(p.frictional), coulomb(0.3));
+    EXPECT_LT(relative(x.u, reference.u), 1e-12) << "E = " << E;
+    EXPECT_LT(relative(x.lambda_n / E, reference.lambda_n), 1e-12) << "E = " << E;
+    EXPECT_LT(relative(x.lambda_t / E, reference.lambda_t), 1e-12) << "E = " << E;
+    EXPECT_EQ(x.steps, reference.steps) << "E = " << E;
+  }
 }

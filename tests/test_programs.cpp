@@ -847,7 +847,53 @@ TEST(Programs, ch08_refuses_malformed_input) {
                       {"--scene cattaneo --q-ratio 1", "q-ratio"}, {"--scene cattaneo --law tresca", "law"},
                       {"--scene cattaneo --friction 0", "friction"}, {"--scene cattaneo --delta 1.5", "delta"},
                       {"--solver fixed-point --law tresca", "solver"}, {"--E1 1e300", "E1"}, {"--E2 1e-160", "E2"},
-                      {"--friction 11", "friction"}});
+                      {"--friction 11", "friction"},
+                      // several discrete Coulomb solutions beyond F = 4 on the manufactured scene
+                      // (the Newton steps cycled at F = 5 and 10, the fixed point settled 100%
+                      // off); a Cattaneo contact zone under one element (one node held body 1 and
+                      // slid: no solution)
+                      {"--quick --no-compare --friction 5", "friction"}, {"--levels 5 --friction 10", "friction"},
+                      {"--friction 10 --solver fixed-point", "friction"},
+                      {"--scene cattaneo --n0 16 --levels 3 --no-compare --R 1e-3", "R"},
+                      {"--scene cattaneo --n0 16 --levels 3 --no-compare --R 1e-6", "R"},
+                      {"--scene cattaneo --n0 16 --levels 3 --no-compare --delta 1e-12", "delta"}});
+}
+
+// --solver fixed-point beside the Newton method: the comparison runs Newton against the fixed
+// point (it ran the fixed point twice, "answers differ by 0.0e+00", and labelled both Newton):
+// Newton's Coulomb steps are LUs, the fixed point's Tresca steps never, and the answers agree
+// to the fixed point's tolerance without being the same run.
+TEST(Programs, ch08_fixed_point_is_compared_with_newton) {
+  const std::string dir = out_dir("ch08_fixed_point");
+  const ProgramRun r = run(std::string(CH08) + " --quick --solver fixed-point --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(summary_value(dir, "results", "lu_steps"), 0.0);  // the study itself: the fixed point
+  for (double lu : csv_column(dir + "/solvers.csv", "newton_lu_steps")) EXPECT_GT(lu, 0.0);
+  for (double difference : csv_column(dir + "/solvers.csv", "difference")) {
+    EXPECT_GT(difference, 0.0);
+    EXPECT_LT(difference, 1e-8);
+  }
+}
+
+// Cattaneo's scene where the Newton method failed: the fixed point (its first Tresca problem,
+// frictionless, left body 1 free: "matrix singular") now starts with no slip and gives Newton's
+// answer; F = 1e6 with Q = 0.6 F P sticks at every node of every load step (it cycled, residual
+// 4e2 after 50 steps, before the restart from the no-slip solution).
+TEST(Programs, ch08_cattaneo_fixed_point_and_huge_friction) {
+  const std::string cattaneo = " --scene cattaneo --n0 16 --levels 3 --load-steps 3 --no-compare --no-plot --out ";
+  const std::string dn = out_dir("ch08_cattaneo_newton"), df = out_dir("ch08_cattaneo_fixed_point"),
+                    dh = out_dir("ch08_cattaneo_1e6");
+  const ProgramRun n = run(std::string(CH08) + cattaneo + dn);
+  const ProgramRun f = run(std::string(CH08) + cattaneo + df + " --solver fixed-point");
+  const ProgramRun h = run(std::string(CH08) + cattaneo + dh + " --friction 1e6");
+  ASSERT_EQ(n.status, 0) << n.output;
+  ASSERT_EQ(f.status, 0) << f.output;
+  ASSERT_EQ(h.status, 0) << h.output;
+  EXPECT_NEAR(summary_value(df, "results", "tangential_traction_rel_error_l2") /
+                  summary_value(dn, "results", "tangential_traction_rel_error_l2"),
+              1.0, 1e-6);
+  for (double slip : csv_column(dh + "/cattaneo.csv", "slip_nodes")) EXPECT_EQ(slip, 0.0);
+  for (double stick : csv_column(dh + "/cattaneo.csv", "stick_nodes")) EXPECT_GT(stick, 0.0);
 }
 
 // The manufactured Tresca scene (chapter 8 notes): Theorem-like O(h) in energy over five levels

@@ -112,7 +112,7 @@ void plot_newton(const std::string& folder, const Options& o, const FrictionalLe
   mortar::Figure fig;
   fig.title = "semismooth Newton on the finest mesh, " + scene_title(o) + ": the residual after each step";
   fig.xlabel = "Newton step";
-  fig.ylabel = "max |C_n| / Λ, |C_t| / Λ^2 [-]";
+  fig.ylabel = "largest nodal residual, each node against its own size [-]";
   fig.log_y = true;
   fig.key = "top right";
   fig.settings = {"set xtics 1", "set grid"};

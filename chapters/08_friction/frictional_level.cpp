@@ -64,6 +64,9 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
     options.law = setup.law;
     options.friction = setup.friction;
     options.threshold = threshold;
+    // one set of factorizations for the whole load path: the pattern of the Newton matrix is
+    // fixed by the condensed problem, so CHOLMOD's and UMFPACK's analyses are made once
+    options.factorizations = std::make_shared<mortar::FrictionFactorizations>();
     if (scene.start_glued) options.start = glued_start(m);
     if (setup.start_at) {
       // a slip start needs |z| >= s: lambda_t beyond every threshold, in the slip's direction
@@ -86,6 +89,7 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
     mortar::CondensedContact condensed = mortar::condense_contact(mortar::stack_frictional_rows(pn, pt));
     double normal_force = setup.normal_force;
     for (int step = 0; step < scene.steps; ++step) {
+      const mortar::Stopwatch step_clock;
       if (step > 0) {
         // the step's loads: f and the gaps G - B u_d of both row sets, then r = T^T (f - K g)
         const mortar::SceneData data = scene.step_data(r.bodies, step, normal_force);
@@ -115,6 +119,7 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
       s.u = system.expand(s.solution.u);
       options.previous_slip = s.solution.w_t;
       options.start = s.solution.nodes;
+      options.fixed_point_start = setup.friction * s.solution.lambda_n.cwiseMax(0.0);  // the last step's F p
       for (auto& n : options.start) n.dw_t = 0;
       // 8. What the step says on Gamma_c.
       s.pressure = mortar::contact_pressure(r.gamma, r.normal, s.solution.lambda_n);
@@ -124,6 +129,7 @@ FrictionalLevel solve_frictional_level(const LevelSetup& setup, const Scene& sce
       s.status.assign(s.pressure.x.size(), mortar::NodeStatus::open);
       for (int i = 0; i < m; ++i) s.status[r.normal.row_node[i]] = s.solution.status[i];
       if (step == 0 && !(setup.normal_force > 0)) normal_force = s.normal_force;
+      s.time_s = step_clock.seconds();
       r.steps.push_back(std::move(s));
     }
   };

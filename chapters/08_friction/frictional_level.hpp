@@ -37,6 +37,7 @@ struct StepResult {
   std::vector<mortar::NodeStatus> status;  // per node of the non-mortar trace (open at its ends)
   double normal_force = 0, shear_force = 0;  // int lambda_n,h and int lambda_t,h
   int newton_steps = 0, outer_iterations = 0;
+  double time_s = 0;  // the load step's loads, Newton steps and reading, wall time
 };
 
 struct FrictionalLevel {

@@ -50,6 +50,7 @@ struct CattaneoStep {
   double pressure_change_rel_l2 = 0;      // ||p_h(Q) - p_h(0)|| / ||p_h(0)||
   double hertz_pressure_rel_error_l2 = 0;  // ||p_h - p_Hertz|| / ||p_Hertz||
   int newton_steps = 0, lu_steps = 0, stick_nodes = 0, slip_nodes = 0;
+  double limit_ratio = 0;                 // the load step's time over the level's physical limit
 };
 std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const FrictionalLevel& r);
 mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last);

@@ -36,8 +36,24 @@ double normal_function(const NodalUnknowns& x, const NodalLaw& law) {
 
 double tangential_function(const NodalUnknowns& x, const NodalLaw& law) {
   const double s = friction_threshold(x, law), z = z_of(x, law);
+  if (std::isinf(s)) return x.lambda_t - z;  // C_t / s as s grows: -c_t dw_t, no slip anywhere
   if (!in_contact(x, law) || !(s > 0)) return x.lambda_t;
   return std::max(s, std::fabs(z)) * x.lambda_t - s * z;
+}
+
+NodalResidual nodal_residual(const NodalUnknowns& x, const NodalLaw& law) {
+  NodalResidual r;
+  r.normal = normal_function(x, law);
+  r.normal_size = std::max(std::fabs(x.lambda_n), law.c_n * std::fabs(x.w_n));
+  const double s = friction_threshold(x, law);
+  if (std::isinf(s) || !in_contact(x, law) || !(s > 0)) {  // -c_t dw_t (no slip), or lambda_t
+    r.tangential = tangential_function(x, law);
+    r.tangential_size = r.normal_size;
+    return r;
+  }
+  r.tangential = tangential_function(x, law) / std::max(s, std::fabs(z_of(x, law)));
+  r.tangential_size = s;
+  return r;
 }
 
 NodalGradient normal_gradient(const NodalUnknowns& x, const NodalLaw& law) {
@@ -51,6 +67,10 @@ NodalGradient tangential_gradient(const NodalUnknowns& x, const NodalLaw& law, b
   NodalGradient g;
   const NodeStatus status = node_status(x, law);
   const double s = friction_threshold(x, law), z = z_of(x, law);
+  if (std::isinf(s)) {  // no slip, in contact or not: C_t / s = -c_t dw_t
+    g.dw_t = -law.c_t;
+    return g;
+  }
   if (status == NodeStatus::open || !(s > 0)) {  // C_t = lambda_t
     g.lambda_t = 1;
     return g;

@@ -20,6 +20,10 @@
 // nothing is transmitted, and C_t above would be degenerate there (s = 0). The same holds on a
 // node in contact with no friction (s = 0: F = 0, or a zero Tresca threshold): it slips freely.
 // Coulomb's threshold is s = F max(0, lambda_n + c_n w_n), which is F lambda_n once w_n = 0.
+// An infinite Tresca threshold forbids slip on the whole node, in contact or not: C_t / s =
+// -c_t dw_t. With it on every node the problem is chapter 6's unilateral contact with the
+// tangential motion glued, a convex problem: friction_newton.hpp starts from its solution when
+// the Newton steps do not settle, and the fixed point on Tresca thresholds starts with it.
 #pragma once
 
 namespace mortar {
@@ -48,6 +52,22 @@ NodeStatus node_status(const NodalUnknowns& x, const NodalLaw& law);
 
 double normal_function(const NodalUnknowns& x, const NodalLaw& law);      // C_n
 double tangential_function(const NodalUnknowns& x, const NodalLaw& law);  // C_t
+
+// The two equations of the node in the unit of the multipliers, each beside the size it is
+// measured against (the stopping test of friction_newton.hpp):
+//   normal:     C_n, against max(|lambda_n|, c_n |w_n|), the node's pressure or its gap;
+//   tangential: C_t / max(s, |z|) = lambda_t - s z / max(s, |z|), lambda_t minus the
+//               projection of z onto [-s, s], against s (in contact with s > 0); elsewhere
+//               lambda_t, against the normal size.
+// On a slip node the tangential residual over s is the relative distance of |lambda_t| from
+// its threshold; on a stick node it is c_t |dw_t| / s, the slip in units of the threshold.
+// C_t itself is a multiplier times a threshold: measured against a multiplier it would depend
+// on the unit of E.
+struct NodalResidual {
+  double normal = 0, normal_size = 0;
+  double tangential = 0, tangential_size = 0;
+};
+NodalResidual nodal_residual(const NodalUnknowns& x, const NodalLaw& law);
 
 // A generalized derivative of C with respect to (lambda_n, w_n, lambda_t, dw_t): the Newton
 // row of the node. The max and the absolute value are differentiated on the side the status

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -88,18 +89,35 @@ struct Residual {
   int stick = 0, slip = 0;
 };
 
-// max |C_n| / Lambda and max |C_t| / Lambda^2, Lambda the largest of the multipliers and of
-// c w (the same unit: where every node is open, the multipliers are round-off).
-Residual residual_of(const std::vector<NodalUnknowns>& x, const std::vector<NodalLaw>& laws) {
-  double scale = 0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    scale = std::max({scale, std::fabs(x[i].lambda_n), std::fabs(x[i].lambda_t), laws[i].c_n * std::fabs(x[i].w_n),
-                      laws[i].c_t * std::fabs(x[i].dw_t)});
-  if (!(scale > 0)) scale = 1;
+// The round-off that lambda = (r - A v) carries at node i: a few ulps of the largest of the
+// terms it sums, (|r| + |A| |v|) at the node's two pivots. No stopping test can ask for less.
+double multiplier_round_off(const CondensedContact& c, const Eigen::VectorXd& v, int node) {
+  const int m = c.rows() / 2;
+  double terms = 0;
+  for (int p : {c.pivots[node], c.pivots[m + node]}) {
+    double t = std::fabs(c.rhs[p]);
+    for (SparseMatrix::InnerIterator it(c.A, p); it; ++it) t += std::fabs(it.value() * v[it.row()]);
+    terms = std::max(terms, t);
+  }
+  return 8 * std::numeric_limits<double>::epsilon() * terms;
+}
+
+// |r| measured against the size d: 0 when both vanish (an unloaded node is converged).
+double against(double r, double d) { return r == 0 ? 0.0 : std::fabs(r) / d; }
+
+// The stopping test, node by node: each equation against the node's own size
+// (friction_conditions.hpp, nodal_residual), or against round_off / tolerance where the
+// multipliers' round-off is larger. Every node then holds its equations to the tolerance, or to
+// round-off: a slip node's |lambda_t| is its threshold to that relative accuracy, however small
+// its pressure beside the largest.
+Residual residual_of(const std::vector<NodalUnknowns>& x, const std::vector<NodalLaw>& laws,
+                     const std::vector<double>& round_off, double tolerance) {
   Residual r;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    r.value = std::max({r.value, std::fabs(normal_function(x[i], laws[i])) / scale,
-                        std::fabs(tangential_function(x[i], laws[i])) / (scale * scale)});
+    const NodalResidual e = nodal_residual(x[i], laws[i]);
+    const double floor = round_off[i] / tolerance;
+    r.value = std::max({r.value, against(e.normal, std::max(e.normal_size, floor)),
+                        against(e.tangential, std::max(e.tangential_size, floor))});
     const NodeStatus s = node_status(x[i], laws[i]);
     r.stick += s == NodeStatus::stick;
     r.slip += s == NodeStatus::slip;
@@ -108,6 +126,24 @@ Residual residual_of(const std::vector<NodalUnknowns>& x, const std::vector<Noda
 }
 
 }  // namespace
+
+Eigen::VectorXd FrictionFactorizations::solve(const SparseMatrix& J, const Eigen::VectorXd& b, bool symmetric,
+                                              int& lu_steps) {
+  if (symmetric) {
+    try {
+      if (spd_ready_) spd_.refactorize(J);
+      else spd_.factorize(J);
+      spd_ready_ = true;
+      return spd_.solve(b);
+    } catch (const std::runtime_error&) {
+      spd_ready_ = false;  // not positive definite: the LU below takes it
+    }
+  }
+  const ProfilePhase phase("frictional Newton: sparse LU");
+  lu_.refactorize(J);
+  ++lu_steps;
+  return lu_.solve(b);
+}
 
 NodalUnknowns nodal_unknowns(const CondensedContact& c, const Eigen::VectorXd& v, int node, double previous_slip) {
   const int m = c.rows() / 2, pn = c.pivots[node], pt = c.pivots[m + node];
@@ -119,152 +155,232 @@ NodalUnknowns nodal_unknowns(const CondensedContact& c, const Eigen::VectorXd& v
   return x;
 }
 
+namespace {
+
+// The nodal laws and the pivots' roles: what every Newton step of one problem reads.
+struct NewtonProblem {
+  const CondensedContact& c;
+  std::vector<NodalLaw> laws;
+  Eigen::VectorXd previous;  // w_t at the end of the last load step
+  std::vector<int> role;     // 0 at a normal pivot, 1 at a tangential one, -1 elsewhere
+  bool bounded = true;
+  int nodes() const { return static_cast<int>(laws.size()); }
+};
+
+// c_n, c_t: the diagonal of A at the node's two pivots (chapter 6's c_i), in the unit of the
+// multipliers per unit of w.
+NewtonProblem newton_problem(const CondensedContact& c, FrictionLaw law, double friction,
+                             const Eigen::VectorXd& threshold, const Eigen::VectorXd& previous, bool bounded) {
+  const int m = c.rows() / 2;
+  NewtonProblem p{c, std::vector<NodalLaw>(static_cast<std::size_t>(m)), previous,
+                  std::vector<int>(static_cast<std::size_t>(c.A.rows()), -1), bounded};
+  for (int i = 0; i < m; ++i) {
+    const int pn = c.pivots[i], pt = c.pivots[m + i];
+    p.laws[i] = {law, friction, law == FrictionLaw::tresca ? threshold[i] : 0.0, c.A.coeff(pn, pn), c.A.coeff(pt, pt)};
+    p.role[pn] = 0;
+    p.role[pt] = 1;
+  }
+  return p;
+}
+
+// One Newton matrix and its right-hand side. Its pattern never changes (explicit zeros hold
+// the places of unused entries), so the factorizations keep their analysis from step to step.
+struct NewtonSystem {
+  SparseMatrix J;
+  Eigen::VectorXd b;
+  bool symmetric = true;
+};
+
+// The nodal rows of every node, linearized at x: grad C . x+ = grad C . x - C(x).
+std::vector<PivotRow> nodal_rows(const NewtonProblem& p, const std::vector<NodalUnknowns>& x) {
+  const int m = p.nodes();
+  std::vector<PivotRow> rows(static_cast<std::size_t>(2 * m));
+  for (int i = 0; i < m; ++i) {
+    const int pn = p.c.pivots[i], pt = p.c.pivots[m + i];
+    const NodalGradient gn = normal_gradient(x[i], p.laws[i]);
+    const NodalGradient gt = tangential_gradient(x[i], p.laws[i], p.bounded);
+    rows[i] = pivot_row(gn, gn.dot(x[i]) - normal_function(x[i], p.laws[i]), 0, p.c, pn, pt, p.previous[i]);
+    rows[m + i] = pivot_row(gt, gt.dot(x[i]) - tangential_function(x[i], p.laws[i]), 1, p.c, pn, pt, p.previous[i]);
+  }
+  return rows;
+}
+
+// A row keeps A's symmetry when it is A's own row (kappa[own] = 1), holds no part of the other
+// pivot's row, and has no entry in the other pivot's column unless that pivot is prescribed.
+bool rows_keep_symmetry(const NewtonProblem& p, const std::vector<PivotRow>& rows, const std::vector<char>& known) {
+  const int m = p.nodes();
+  for (int i = 0; i < m; ++i)
+    for (int own = 0; own < 2; ++own) {
+      const PivotRow& r = rows[own * m + i];
+      const int other_pivot = p.c.pivots[(1 - own) * m + i];
+      if (r.known) continue;
+      if (r.kappa[1 - own] != 0 || (r.beta[1 - own] != 0 && !known[other_pivot])) return false;
+      if (r.kappa[own] != 1.0) return false;
+    }
+  return true;
+}
+
+NewtonSystem newton_system(const NewtonProblem& p, const std::vector<PivotRow>& rows) {
+  const ProfilePhase phase("frictional Newton: rows");
+  const CondensedContact& c = p.c;
+  const int m = p.nodes();
+  const Eigen::Index n = c.A.rows();
+  std::vector<char> known(static_cast<std::size_t>(n), 0);
+  Eigen::VectorXd known_value = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < 2 * m; ++k)
+    if (rows[k].known) {
+      known[c.pivots[k]] = 1;
+      known_value[c.pivots[k]] = rows[k].value;
+    }
+  NewtonSystem s;
+  s.symmetric = rows_keep_symmetry(p, rows, known);
+  s.b = c.rhs;
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(c.A.nonZeros()) + 40 * static_cast<std::size_t>(m));
+  // Rows of A off the pivots; a prescribed column moves to the right-hand side (its place kept).
+  for (Eigen::Index col = 0; col < n; ++col)
+    for (SparseMatrix::InnerIterator it(c.A, col); it; ++it) {
+      if (p.role[it.row()] >= 0) continue;
+      if (known[col]) s.b[it.row()] -= it.value() * known_value[col];
+      t.emplace_back(it.row(), col, known[col] ? 0.0 : it.value());
+    }
+  // The pivot rows: kappa_q times row q of A plus beta_q at q, over the node's pivots q; a
+  // prescribed pivot is an identity row. Every place of both rows of A is written.
+  for (int k = 0; k < 2 * m; ++k) {
+    const int i = k % m, pivot = c.pivots[k];
+    const int q_dof[2] = {c.pivots[i], c.pivots[m + i]};
+    const PivotRow& r = rows[k];
+    t.emplace_back(pivot, pivot, r.known ? 1.0 : 0.0);
+    s.b[pivot] = r.known ? r.value : r.rhs;
+    for (int q = 0; q < 2; ++q) {
+      const double kappa = r.known ? 0.0 : r.kappa[q], beta = r.known ? 0.0 : r.beta[q];
+      for (SparseMatrix::InnerIterator it(c.A, q_dof[q]); it; ++it) {
+        if (known[it.row()]) s.b[pivot] -= kappa * it.value() * known_value[it.row()];
+        t.emplace_back(pivot, it.row(), known[it.row()] ? 0.0 : kappa * it.value());
+      }
+      if (known[q_dof[q]]) s.b[pivot] -= beta * known_value[q_dof[q]];
+      t.emplace_back(pivot, q_dof[q], known[q_dof[q]] ? 0.0 : beta);
+    }
+  }
+  s.J.resize(n, n);
+  s.J.setFromTriplets(t.begin(), t.end());
+  return s;
+}
+
+// How a run of Newton steps ended.
+struct Attempt {
+  bool converged = false;
+  bool cycled = false;  // a set of statuses came back after another one: the iteration cycles
+  std::vector<NodalUnknowns> x;
+  Eigen::VectorXd v;
+  Residual last;
+};
+
+std::vector<NodeStatus> statuses(const NewtonProblem& p, const std::vector<NodalUnknowns>& x) {
+  std::vector<NodeStatus> s(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) s[i] = node_status(x[i], p.laws[i]);
+  return s;
+}
+
+// At most max_steps Newton steps from the linearization point x, each recorded in sol. Stops
+// early when the statuses cycle, or when ten steps in a row bring no smaller residual.
+Attempt newton_steps(const NewtonProblem& p, std::vector<NodalUnknowns> x, int max_steps, double tolerance,
+                     FrictionFactorizations& solves, FrictionSolution& sol) {
+  const CondensedContact& c = p.c;
+  const int m = p.nodes();
+  Attempt a;
+  std::vector<std::vector<NodeStatus>> seen;
+  double best = std::numeric_limits<double>::infinity();
+  int best_step = 0;
+  for (int step = 1; step <= max_steps; ++step) {
+    const NewtonSystem system = newton_system(p, nodal_rows(p, x));
+    a.v = solves.solve(system.J, system.b, system.symmetric, sol.lu_steps);
+    ++sol.steps;
+    std::vector<double> round_off(static_cast<std::size_t>(m));
+    for (int i = 0; i < m; ++i) {
+      x[i] = nodal_unknowns(c, a.v, i, p.previous[i]);
+      round_off[i] = multiplier_round_off(c, a.v, i);
+    }
+    a.last = residual_of(x, p.laws, round_off, tolerance);
+    sol.residuals.push_back(a.last.value);
+    sol.stick.push_back(a.last.stick);
+    sol.slip.push_back(a.last.slip);
+    if (a.last.value <= tolerance) {
+      a.converged = true;
+      break;
+    }
+    std::vector<NodeStatus> now = statuses(p, x);
+    a.cycled = !seen.empty() && now != seen.back() && std::find(seen.begin(), seen.end(), now) != seen.end();
+    seen.push_back(std::move(now));
+    if (a.last.value < best) {
+      best = a.last.value;
+      best_step = step;
+    }
+    if (a.cycled || step - best_step >= 10) break;
+  }
+  a.x = std::move(x);
+  return a;
+}
+
+std::string failure_message(const Attempt& a, const FrictionSolution& sol, double tolerance) {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "frictional Newton: residual %.3e after %d steps, from the given start and from the no-slip "
+                "solution (tolerance %.1e; %d nodes stick, %d slip%s)",
+                a.last.value, sol.steps, tolerance, a.last.stick, a.last.slip,
+                a.cycled ? "; the statuses cycle: the discrete problem may have several solutions" : "");
+  return text;
+}
+
+}  // namespace
+
 FrictionSolution solve_frictional_contact(const CondensedContact& c, const FrictionOptions& o) {
   if (c.rows() % 2 != 0) throw std::invalid_argument("solve_frictional_contact: the rows are not [B_n; B_t]");
   const int m = c.rows() / 2;
-  const Eigen::Index n = c.A.rows();
   const Eigen::VectorXd previous = o.previous_slip.size() == m ? o.previous_slip : Eigen::VectorXd::Zero(m);
   if (o.law == FrictionLaw::tresca && o.threshold.size() != m)
     throw std::invalid_argument("solve_frictional_contact: Tresca needs one threshold per node (" + std::to_string(m) + ")");
   if (!o.start.empty() && static_cast<int>(o.start.size()) != m)
     throw std::invalid_argument("solve_frictional_contact: the start has the wrong number of nodes");
+  const std::vector<NodalUnknowns> start = o.start.empty() ? std::vector<NodalUnknowns>(static_cast<std::size_t>(m)) : o.start;
 
-  std::vector<NodalLaw> laws(static_cast<std::size_t>(m));
-  std::vector<int> node_of(static_cast<std::size_t>(n), -1), role(static_cast<std::size_t>(n), -1);
-  for (int i = 0; i < m; ++i) {
-    const int pn = c.pivots[i], pt = c.pivots[m + i];
-    laws[i] = {o.law, o.friction, o.law == FrictionLaw::tresca ? o.threshold[i] : 0.0, c.A.coeff(pn, pn),
-               c.A.coeff(pt, pt)};
-    node_of[pn] = node_of[pt] = i;
-    role[pn] = 0;
-    role[pt] = 1;
-  }
-  std::vector<NodalUnknowns> x = o.start.empty() ? std::vector<NodalUnknowns>(static_cast<std::size_t>(m)) : o.start;
-
+  const NewtonProblem problem = newton_problem(c, o.law, o.friction, o.threshold, previous, o.bounded_gradient);
+  const std::shared_ptr<FrictionFactorizations> solves =
+      o.factorizations ? o.factorizations : std::make_shared<FrictionFactorizations>(o.backend);
   FrictionSolution sol;
-  Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
-  for (int step = 1; step <= o.max_steps; ++step) {
-    // 1. The nodal rows, linearized at x.
-    std::vector<PivotRow> rows(static_cast<std::size_t>(2 * m));
-    bool symmetric = true;
-    for (int i = 0; i < m; ++i) {
-      const int pn = c.pivots[i], pt = c.pivots[m + i];
-      const NodalGradient gn = normal_gradient(x[i], laws[i]);
-      const NodalGradient gt = tangential_gradient(x[i], laws[i], o.bounded_gradient);
-      rows[i] = pivot_row(gn, gn.dot(x[i]) - normal_function(x[i], laws[i]), 0, c, pn, pt, previous[i]);
-      rows[m + i] = pivot_row(gt, gt.dot(x[i]) - tangential_function(x[i], laws[i]), 1, c, pn, pt, previous[i]);
-    }
-    std::vector<char> known(static_cast<std::size_t>(n), 0);
-    Eigen::VectorXd known_value = Eigen::VectorXd::Zero(n);
-    for (int k = 0; k < 2 * m; ++k)
-      if (rows[k].known) {
-        known[c.pivots[k]] = 1;
-        known_value[c.pivots[k]] = rows[k].value;
-      }
-    // A row couples to the other pivot of its node unless that one is prescribed.
-    for (int i = 0; i < m; ++i)
-      for (int own = 0; own < 2; ++own) {
-        const PivotRow& r = rows[own * m + i];
-        const int other_pivot = c.pivots[(1 - own) * m + i];
-        if (!r.known && (r.kappa[1 - own] != 0 || (r.beta[1 - own] != 0 && !known[other_pivot]))) symmetric = false;
-        if (!r.known && r.kappa[own] != 1.0) symmetric = false;
-      }
-
-    // 2. The matrix: rows of A off the pivots, the nodal rows at them, prescribed values moved
-    //    to the right-hand side.
-    SparseMatrix J(n, n);
-    Eigen::VectorXd b = c.rhs;
-    {
-      const ProfilePhase phase("frictional Newton: rows");
-      std::vector<Eigen::Triplet<double>> t;
-      t.reserve(static_cast<std::size_t>(c.A.nonZeros()) + 8 * static_cast<std::size_t>(m));
-      for (Eigen::Index col = 0; col < n; ++col)
-        for (SparseMatrix::InnerIterator it(c.A, col); it; ++it) {
-          if (role[it.row()] >= 0) continue;
-          if (known[col]) b[it.row()] -= it.value() * known_value[col];
-          else t.emplace_back(it.row(), col, it.value());
-        }
-      for (int k = 0; k < 2 * m; ++k) {
-        const int i = k % m, p = c.pivots[k];
-        const int q_dof[2] = {c.pivots[i], c.pivots[m + i]};
-        const PivotRow& r = rows[k];
-        if (r.known) {
-          t.emplace_back(p, p, 1.0);
-          b[p] = r.value;
-          continue;
-        }
-        b[p] = r.rhs;
-        for (int q = 0; q < 2; ++q) {
-          if (r.kappa[q] != 0)
-            for (SparseMatrix::InnerIterator it(c.A, q_dof[q]); it; ++it) {
-              if (known[it.row()]) b[p] -= r.kappa[q] * it.value() * known_value[it.row()];
-              else t.emplace_back(p, it.row(), r.kappa[q] * it.value());
-            }
-          if (r.beta[q] != 0) {
-            if (known[q_dof[q]]) b[p] -= r.beta[q] * known_value[q_dof[q]];
-            else t.emplace_back(p, q_dof[q], r.beta[q]);
-          }
-        }
-      }
-      J.setFromTriplets(t.begin(), t.end());
-    }
-
-    // 3. One solve: Cholesky while the rows keep A's symmetry, LU when a Coulomb row breaks it.
-    bool solved = false;
-    if (symmetric) {
-      try {
-        SpdSolver spd(o.backend);
-        spd.factorize(J);
-        v = spd.solve(b);
-        solved = true;
-      } catch (const std::runtime_error&) {
-        // not positive definite (a negative shift of a slip row): the LU below takes it
-      }
-    }
-    if (!solved) {
-      try {
-        const ProfilePhase phase("frictional Newton: sparse LU");
-        SparseLu lu;
-        lu.factorize(J);
-        v = lu.solve(b);
-        ++sol.lu_steps;
-      } catch (const std::runtime_error& e) {
-        const std::string what = e.what();
-        const bool singular = what.find("singular") != std::string::npos;
-        throw std::runtime_error("frictional Newton, step " + std::to_string(step) + ": " + what +
-                                 (singular ? " (does every node slip? then friction cannot hold the load: gross sliding)" : ""));
-      }
-    }
-    sol.steps = step;
-
-    // 4. The new point and its residual.
-    for (int i = 0; i < m; ++i) x[i] = nodal_unknowns(c, v, i, previous[i]);
-    const Residual r = residual_of(x, laws);
-    sol.residuals.push_back(r.value);
-    sol.stick.push_back(r.stick);
-    sol.slip.push_back(r.slip);
-    if (r.value <= o.tolerance) break;
-    if (step == o.max_steps) {
-      char text[200];
-      std::snprintf(text, sizeof text,
-                    "frictional Newton: residual %.3e after %d steps (tolerance %.1e; %d nodes stick, %d slip)", r.value,
-                    step, o.tolerance, r.stick, r.slip);
-      throw std::runtime_error(text);
-    }
+  Attempt a;
+  try {
+    a = newton_steps(problem, start, o.max_steps, o.tolerance, *solves, sol);
+  } catch (const std::runtime_error&) {
+    // a singular step (a body held in x by friction alone, every node slipping): the restart below
+  }
+  if (!a.converged) {
+    // The globalization: the same loads with no slip allowed (Tresca with infinite thresholds,
+    // a convex problem whose steps are symmetric), then the law again from its solution, where
+    // every node in contact sticks. A Newton step from a point whose statuses are wrong can slip
+    // a node that alone holds a body, or couple F times a stray slip into the pressure; from the
+    // no-slip solution the law has only to release the nodes that slip.
+    const Eigen::VectorXd no_slip = Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
+    const NewtonProblem stuck = newton_problem(c, FrictionLaw::tresca, 0.0, no_slip, previous, o.bounded_gradient);
+    const Attempt glued = newton_steps(stuck, start, o.max_steps, o.tolerance, *solves, sol);
+    if (!glued.converged) throw std::runtime_error(failure_message(glued, sol, o.tolerance));
+    ++sol.restarts;
+    a = newton_steps(problem, glued.x, o.max_steps, o.tolerance, *solves, sol);
+    if (!a.converged) throw std::runtime_error(failure_message(a, sol, o.tolerance));
   }
 
-  sol.u = c.displacement(v);
-  sol.nodes = x;
+  sol.u = c.displacement(a.v);
+  sol.nodes = a.x;
   sol.lambda_n.resize(m);
   sol.lambda_t.resize(m);
   sol.w_n.resize(m);
   sol.w_t.resize(m);
   for (int i = 0; i < m; ++i) {
-    sol.lambda_n[i] = x[i].lambda_n;
-    sol.lambda_t[i] = x[i].lambda_t;
-    sol.w_n[i] = x[i].w_n;
-    sol.w_t[i] = x[i].dw_t + previous[i];
-    sol.status.push_back(node_status(x[i], laws[i]));
+    sol.lambda_n[i] = a.x[i].lambda_n;
+    sol.lambda_t[i] = a.x[i].lambda_t;
+    sol.w_n[i] = a.x[i].w_n;
+    sol.w_t[i] = a.x[i].dw_t + previous[i];
+    sol.status.push_back(node_status(a.x[i], problem.laws[i]));
   }
   return sol;
 }
@@ -275,7 +391,9 @@ FixedPointSolution solve_coulomb_by_fixed_point(const CondensedContact& c, const
   FixedPointSolution out;
   FrictionOptions tresca = o;
   tresca.law = FrictionLaw::tresca;
-  tresca.threshold = Eigen::VectorXd::Zero(m);
+  tresca.threshold = o.fixed_point_start.size() == m
+                         ? o.fixed_point_start
+                         : Eigen::VectorXd::Constant(m, std::numeric_limits<double>::infinity());
   for (int k = 1; k <= max_outer; ++k) {
     out.last = solve_frictional_contact(c, tresca);
     out.outer = k;

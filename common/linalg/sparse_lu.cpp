@@ -1,6 +1,7 @@
 #include "common/linalg/sparse_lu.hpp"
 
 #include <Eigen/SparseLU>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -74,6 +75,15 @@ std::string SparseLu::name() {
 #endif
 }
 
+namespace {
+bool same_pattern(const SparseMatrix& a, const SparseMatrix& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  if (!a.isCompressed() || !b.isCompressed()) return false;
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+}
+}  // namespace
+
 void SparseLu::factorize(const SparseMatrix& A) {
   impl_->A = A;
 #ifdef MORTAR_HAVE_UMFPACK
@@ -82,6 +92,26 @@ void SparseLu::factorize(const SparseMatrix& A) {
 #else
   impl_->lu.compute(impl_->A);
 #endif
+  check_factor();
+}
+
+void SparseLu::refactorize(const SparseMatrix& A) {
+  if (impl_->A.rows() == 0 || !same_pattern(A, impl_->A)) {
+    factorize(A);
+    return;
+  }
+  impl_->A = A;
+#ifdef MORTAR_HAVE_UMFPACK
+  impl_->A_long = A;
+  impl_->lu.factorize(impl_->A_long);
+#else
+  impl_->lu.factorize(impl_->A);
+#endif
+  check_factor();
+}
+
+void SparseLu::check_factor() {
+  const SparseMatrix& A = impl_->A;
 #ifdef MORTAR_HAVE_UMFPACK
   // Eigen calls every failure a numerical issue; UMFPACK's status tells a singular matrix from
   // a factor too large for its 32-bit indices or for the memory.
