@@ -70,8 +70,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   // at F = 6 and 41 at F = 10; from F = 5 on the Newton method cycles between them, and the
   // fixed point settles on solutions 100% off. F = 4 converges like h at every level.
   if (o.scene == "manufactured" && o.friction > 4)
-    parser.fail("friction", "beyond F = 4 the manufactured scene's discrete Coulomb problem has several solutions "
-                            "(41 at F = 10 on the coarsest level): use --scene cattaneo for a large F");
+    parser.fail("friction", "beyond F = 4 the Newton method cycles on the manufactured scene, whose discrete Coulomb "
+                            "problem has several solutions from F = 6 (3 at F = 6, 41 at F = 10 on the coarsest "
+                            "level): use --scene cattaneo for a large F");
   if (o.scene == "cattaneo") {
     // Cattaneo-Mindlin is for one material (beta = 0) on bodies large against the zone
     if (!parser.given("E2")) o.E2 = o.E1;
