@@ -89,11 +89,15 @@ void check_slenderness(const mortar::OptionParser& parser, const Options& o) {
   const double attainable = std::numeric_limits<double>::epsilon() * dofs * std::pow(slender, 3) / 30;
   if (attainable <= o.agreement / 3) return;
   char why[320];
-  std::snprintf(why, sizeof why,
-                "bodies %.3g times as tall as Gamma_c is long bend sideways under a stiffness (L/H)^3 of their own: "
-                "double precision fixes u only to about %.1e at %.3g unknowns, above --agreement %.0e / 3",
-                slender, attainable, dofs, o.agreement);
-  parser.fail("L", why);
+  if (slender > 1)
+    std::snprintf(why, sizeof why,
+                  "bodies %.3g times as tall as Gamma_c is long bend sideways under a stiffness (L/H)^3 of their "
+                  "own: double precision fixes u only to about %.1e at %.3g unknowns, above --agreement %.0e / 3",
+                  slender, attainable, dofs, o.agreement);
+  else
+    std::snprintf(why, sizeof why, "double precision fixes u only to about %.1e at %.3g unknowns, above %.0e / 3",
+                  attainable, dofs, o.agreement);
+  parser.fail(slender > 1 ? "L" : "agreement", why);
 }
 
 void declare_options(mortar::OptionParser& parser, Options& o) {
