@@ -42,19 +42,25 @@ class CondensedSolver {
   // The rows fixed at v = 0 from now on: this rank's active pivots.
   void fix(const std::vector<PetscInt>& owned_rows) { fixed_ = owned_rows; }
   // CG on A_step v = Pi rhs from the given v (both set to 0 on the fixed rows first), to
-  // ||B r|| <= rtol ||B rhs||, or with `from_start` to rtol times the initial residual.
-  // Returns the iterations; throws if CG failed.
+  // ||B r|| <= rtol ||B rhs|| and ||r|| <= rtol ||rhs|| (B the preconditioner, r the residual),
+  // or with `from_start` to ||B r|| <= rtol times its initial value.
+  // Returns the iterations; throws with PETSc's reason, the iterations and the residual when the
+  // true residual misses the tolerance, whatever PETSc's own test said.
   int solve(Vec rhs, Vec v, double rtol, bool from_start);
   // y = A x, nothing fixed.
   void apply_A(Vec x, Vec y);
 
   std::string ksp_type() const;
   std::string pc_type() const;  // of the preconditioner of K
-  double final_rtol() const { return rtol_; }  // after the command line's -ksp_rtol, if any
+  double final_rtol() const { return rtol_; }
 
  private:
   static PetscErrorCode mult(Mat shell, Vec x, Vec y);
   static PetscErrorCode precondition(PC pc, Vec r, Vec z);
+  static PetscErrorCode converged(KSP ksp, PetscInt it, PetscReal rnorm, KSPConvergedReason* reason, void* context);
+  double norm_2(Vec x);
+  double norm(Vec x);
+  Vec residual(Vec rhs, Vec v);
   void zero_fixed(Vec x) const;
   void copy_fixed(Vec from, Vec to) const;
   void apply_T(Vec x, Vec y, bool transpose, bool inverse);
@@ -62,10 +68,16 @@ class CondensedSolver {
   Mat K_, T_, shell_ = nullptr;
   KSP ksp_ = nullptr;
   PC inner_ = nullptr;
-  Vec x_, u_, Ku_;
+  Vec x_, u_, Ku_, rho_, z_;
   std::vector<PetscInt> fixed_;
   PetscInt first_ = 0;
   double rtol_ = 0;
+  // the solve's test in the force residual: ||rho|| <= rtol scale (converged())
+  struct ForceTest {
+    void* standard = nullptr;  // PETSc's default test, run first
+    double rtol = 0, scale = 0;  // rtol = 0: no force test (a loose solve)
+    double first_met = -1;     // PETSc's norm where its own test was first met
+  } force_;
 };
 
 }  // namespace chapter09

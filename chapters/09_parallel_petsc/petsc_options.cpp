@@ -3,6 +3,8 @@
 #include <petscksp.h>
 
 #include <cctype>
+#include <fstream>
+#include <utility>
 
 #include "condensed_solver.hpp"
 #include "distributed_system.hpp"
@@ -51,11 +53,13 @@ std::vector<char*> argv_of(std::vector<std::string>& args) {
   return v;
 }
 
-std::string unused_petsc_options() {
-  // A trial solve configured as the chapter's solves are, on a matrix large enough for GAMG to
-  // build levels below the finest (its -mg_levels_ options are read only then): the 1D
-  // Laplacian (-1, 2, -1) with 400 rows per rank. Every -ksp_, -pc_ and -mg_ option that
-  // applies is read; the trial's own output (a -ksp_monitor) is not shown.
+namespace {
+// A trial solve configured as the chapter's solves are, on a matrix large enough for GAMG to
+// build levels below the finest (its -mg_levels_ options are read only then): the 1D
+// Laplacian (-1, 2, -1) with 400 rows per rank. Every -ksp_, -pc_ and -mg_ option that applies
+// is read; the trial's own output (a -ksp_monitor) is not shown. Throws PetscFailure when PETSc
+// refuses an option's value.
+void trial_solve() {
   const PetscInt per_rank = 400;
   const Ownership rows{per_rank * rank(), per_rank * (rank() + 1), per_rank * ranks()};
   Mat M = create_matrix(rows, 3);
@@ -66,17 +70,94 @@ std::string unused_petsc_options() {
   }
   check(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  {
+  try {
     CondensedSolver trial(M, nullptr, 1e-8);
-    Vec x;
-    check(MatCreateVecs(M, &x, nullptr), "MatCreateVecs");
-    check(MatSetFromOptions(M), "MatSetFromOptions");
-    check(VecSetFromOptions(x), "VecSetFromOptions");
-    check(VecDestroy(&x), "VecDestroy");
     trial.set_up();
+  } catch (...) {
+    MatDestroy(&M);
+    throw;
   }
   check(MatDestroy(&M), "MatDestroy");
+}
 
+// The command line's options as (name, value) pairs; value "" when none followed.
+std::vector<std::pair<std::string, std::string>> option_pairs(const std::vector<std::string>& petsc) {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for (std::size_t k = 1; k < petsc.size(); ++k) {
+    if (!is_petsc_option(petsc[k])) {
+      if (!pairs.empty()) pairs.back().second = petsc[k];
+      continue;
+    }
+    pairs.emplace_back(petsc[k], "");
+  }
+  return pairs;
+}
+
+std::string given(const std::pair<std::string, std::string>& option) {
+  return option.second.empty() ? option.first : option.first + " " + option.second;
+}
+
+// The first option that PETSc refuses on its own in a trial solve, as "-name value: reason";
+// "" if none does alone (then the combination, or an -options_file, is at fault).
+std::string refused_alone(const std::vector<std::pair<std::string, std::string>>& options) {
+  for (const auto& option : options) {
+    PetscOptions alone;
+    check(PetscOptionsCreate(&alone), "PetscOptionsCreate");
+    check(PetscOptionsSetValue(alone, option.first.c_str(), option.second.empty() ? nullptr : option.second.c_str()),
+          "PetscOptionsSetValue");
+    check(PetscOptionsPush(alone), "PetscOptionsPush");
+    std::string reason;
+    try {
+      trial_solve();
+    } catch (const PetscFailure& e) {
+      reason = e.reason();
+    }
+    check(PetscOptionsPop(), "PetscOptionsPop");
+    check(PetscOptionsDestroy(&alone), "PetscOptionsDestroy");
+    if (!reason.empty()) return given(option) + ": PETSc refuses it (" + reason + ")";
+  }
+  return "";
+}
+
+// The options the chapter refuses, whatever their value: "" or the reason.
+std::string refused_by_the_chapter() {
+  const auto has = [](const char* name) {
+    PetscBool set = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, name, &set), "PetscOptionsHasName");
+    return set == PETSC_TRUE;
+  };
+  const auto value = [](const char* name) {
+    char text[64] = "";
+    PetscBool set = PETSC_FALSE;
+    check(PetscOptionsGetString(nullptr, nullptr, name, text, sizeof text, &set), "PetscOptionsGetString");
+    return std::string(set == PETSC_TRUE ? text : "");
+  };
+  if (has("-ksp_rtol"))
+    return "-ksp_rtol: the Krylov tolerances are the course's --ksp-rtol (the final solve) and --loose-rtol "
+           "(while the active set moves), checked on the true residual";
+  if (value("-ksp_type") == "preonly")
+    return "-ksp_type preonly: one application of the preconditioner of K cannot solve the condensed system "
+           "A v = r; use a Krylov method (cg, the default)";
+  if (value("-ksp_norm_type") == "none")
+    return "-ksp_norm_type none: each solve stops on its residual's norm; without one it would run -ksp_max_it "
+           "iterations";
+  for (const char* name : {"-mat_type", "-vec_type"})
+    if (has(name))
+      return std::string(name) + ": the chapter builds AIJ matrices with block size 2 (what GAMG needs to see "
+                                 "the rigid-body modes) and their vectors; the type is not an option";
+  return "";
+}
+}  // namespace
+
+std::string petsc_options_refusal(const std::vector<std::string>& petsc) {
+  const std::string chapter = refused_by_the_chapter();
+  if (!chapter.empty()) return chapter;
+  try {
+    trial_solve();
+  } catch (const PetscFailure& e) {
+    const std::string alone = refused_alone(option_pairs(petsc));
+    return !alone.empty() ? alone : "PETSc refuses its options (" + e.reason() + ")";
+  }
   PetscInt n = 0;
   char** names = nullptr;
   char** values = nullptr;
@@ -85,7 +166,18 @@ std::string unused_petsc_options() {
   for (PetscInt k = 0; k < n; ++k)
     if (!read_outside_solves(names[k])) unused += (unused.empty() ? "-" : ", -") + std::string(names[k]);
   check(PetscOptionsLeftRestore(nullptr, &n, &names, &values), "PetscOptionsLeftRestore");
-  return unused;
+  if (unused.empty()) return "";
+  return "PETSc does not know or does not use " + unused +
+         " (PETSc's options take one dash: -ksp_type, -pc_type, ...; the course's two)";
+}
+
+std::string unreadable_options_file(const std::vector<std::string>& petsc) {
+  for (const auto& option : option_pairs(petsc)) {
+    if (option.first != "-options_file") continue;
+    if (option.second.empty()) return "-options_file: missing file name";
+    if (!std::ifstream(option.second)) return "-options_file " + option.second + ": cannot be read";
+  }
+  return "";
 }
 
 }  // namespace chapter09

@@ -3,7 +3,7 @@
 // letter (-ksp_type cg, -pc_type gamg, -log_view) are PETSc's, with the word after them as their
 // value unless it is an option itself. PETSc reads its options only when it uses them, so a
 // misspelt one would be silently ignored: a trial solve on a tiny matrix reads them all before
-// any work, and any option still unused is refused with status 2.
+// any work, and any option still unused, or whose value PETSc refuses, is refused with status 2.
 #pragma once
 
 #include <string>
@@ -20,8 +20,19 @@ SplitArguments split_arguments(int argc, char** argv);
 // Argument vectors as main() receives them, pointing into `args` (which must outlive them).
 std::vector<char*> argv_of(std::vector<std::string>& args);
 
-// The PETSc options the trial solve did not read (those read only at the end, such as
-// -log_view, are not counted): "" when every one was used, else their names.
-std::string unused_petsc_options();
+// "" when the PETSc options of `petsc` (argv[0] first, as split_arguments gives them) can run
+// the chapter's solves, else one line naming the option at fault, before any work:
+//   - options the chapter refuses: -ksp_rtol (the tolerances are the course's --ksp-rtol and
+//     --loose-rtol, which it checks on the true residual), -ksp_type preonly and
+//     -ksp_norm_type none (no Krylov method, or nothing to stop on), -mat_type and -vec_type
+//     (the matrices are AIJ with block size 2, what GAMG needs);
+//   - an option whose value PETSc refuses in the trial solve (-pc_type bogus, -ksp_divtol abc);
+//   - an option the trial solve did not read (those read only at the end, such as -log_view,
+//     are not counted).
+std::string petsc_options_refusal(const std::vector<std::string>& petsc);
+
+// "" when every -options_file of `petsc` can be read, else the one line saying which cannot
+// (checked before PETSc starts, which would otherwise stop with its own trace).
+std::string unreadable_options_file(const std::vector<std::string>& petsc);
 
 }  // namespace chapter09
