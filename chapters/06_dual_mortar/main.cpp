@@ -63,6 +63,9 @@ int main(int argc, char** argv) {
   mortar::parse_bilateral_options(parser, o, argc, argv, [&no_hertz](const mortar::BilateralStudyOptions& b) {
     return no_hertz ? std::vector<mortar::MemoryPart>{} : chapter06::hertz_memory_parts(b);
   });
+  // a body much stiffer than the other makes a poor non-mortar side: the Hertz part's
+  // semismooth Newton cycles with it at E1/E2 = 1e6 (chapter 5's evidence, "Hard cases")
+  mortar::choose_softer_nonmortar(parser, o);
   // Part 2 runs on chapter 5's bodies (square blocks of one material) unless materials are
   // given, with the same sizes along Gamma_c as part 1. Its lengths follow --L: blocks L tall,
   // R = L, delta = 0.02 L, so that its strains and pressures do not depend on the unit.

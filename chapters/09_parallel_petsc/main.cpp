@@ -133,6 +133,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 2}});
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);
   mortar::check_stiffness_ratio(parser, o);
+  mortar::choose_softer_nonmortar(parser, o);  // as chapter 6, whose answer is the reference
   if (o.delta >= o.H1) parser.fail("delta", "delta must stay below the height of body 1 (small strain)");
   check_slenderness(parser, o);
   check_memory(parser, o);
