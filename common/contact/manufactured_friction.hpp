@@ -40,7 +40,7 @@ class ManufacturedFriction : public ExactContact {
   Eigen::Vector2d body_force(int l, const Eigen::Vector2d& p) const override;
   std::vector<double> body_force_breaks() const override { return {xc_}; }
   double pressure(double x) const override;
-  double shear(double x) const;      // tau = sigma_12 on Gamma_c, the exact lambda_t
+  double shear(double x) const override;  // tau = sigma_12 on Gamma_c, the exact lambda_t
   double slip(double x) const;       // j = u^1_x - u^2_x on Gamma_c
   double threshold(double x) const;  // Tresca's s = F p
   double stick_slip_point() const { return xc_; }
