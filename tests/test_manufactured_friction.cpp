@@ -71,3 +71,21 @@ TEST(ManufacturedFriction, sticks_below_the_threshold_and_slips_at_it_with_the_s
   EXPECT_TRUE(shear_changes_sign);
   EXPECT_GT(m.slip(1.0), 0.0);
 }
+
+// The transition is the generic one: the margin F p - tau grows like sqrt(x_c - x) and the slip
+// like (x - x_c)^{3/2}, with the constants of the header (K sqrt(x_c) = 1.5 F S, C = K/(1.5 mu1)).
+// The earlier solution's margin grew like (x_c - x)^2, which this test refuses.
+TEST(ManufacturedFriction, the_stick_slip_transition_is_of_square_root_type) {
+  for (const Pair& c : pairs) {
+    const Material m1(c.E1, c.nu1), m2(c.E2, c.nu2);
+    const ManufacturedFriction m(m1, m2, 1.0, 0.3);
+    const double xc = m.stick_slip_point();
+    const double S = 1e-3 / ((1 - c.nu1 * c.nu1) / c.E1 + (1 - c.nu2 * c.nu2) / c.E2);
+    const double K = 1.5 * 0.3 * S / std::sqrt(xc), C = K / (1.5 * m1.mu());
+    // d >= 1e-5: x_c +- d carries x_c's round-off, 1e-16 / d of d
+    for (double d : {1e-5, 1e-3, 0.1}) {
+      EXPECT_NEAR((m.threshold(xc - d) - m.shear(xc - d)) / std::sqrt(d), K, 1e-9 * K) << d;
+      EXPECT_NEAR(m.slip(xc + d) / (d * std::sqrt(d)), C, 1e-9 * C) << d;
+    }
+  }
+}
