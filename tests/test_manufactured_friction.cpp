@@ -29,7 +29,9 @@ TEST(ManufacturedFriction, satisfies_equilibrium_and_grad_u_is_the_derivative_of
       EXPECT_LT(r.boundary, 1e-12) << "L " << L << ", E1 " << c.E1;
       EXPECT_LT(r.closed_gap, 1e-12) << "L " << L << ", E1 " << c.E1;
       EXPECT_EQ(r.sign, 0.0);
-      EXPECT_LT(r.traction, 1e-10) << "L " << L << ", E1 " << c.E1;  // sigma_12 = tau on both sides
+      // sigma_12 = tau on both sides, to round-off: in a body 1e6 times stiffer the slip's own
+      // stress, about mu1 C, is 6e5 times p, and cancels to K ~ p: 1e-16 of it is 1e-10 of p
+      EXPECT_LT(r.traction, 1e-9) << "L " << L << ", E1 " << c.E1;
     }
 }
 
@@ -73,7 +75,7 @@ TEST(ManufacturedFriction, sticks_below_the_threshold_and_slips_at_it_with_the_s
 }
 
 // The transition is the generic one: the margin F p - tau grows like sqrt(x_c - x) and the slip
-// like (x - x_c)^{3/2}, with the constants of the header (K sqrt(x_c) = 1.5 F S, C = K/(1.5 mu1)).
+// like (x - x_c)^{3/2}, with the constants of the header (K sqrt(x_c) = 1.5 F S, C = 2 eps / sqrt(L)).
 // The earlier solution's margin grew like (x_c - x)^2, which this test refuses.
 TEST(ManufacturedFriction, the_stick_slip_transition_is_of_square_root_type) {
   for (const Pair& c : pairs) {
@@ -81,7 +83,7 @@ TEST(ManufacturedFriction, the_stick_slip_transition_is_of_square_root_type) {
     const ManufacturedFriction m(m1, m2, 1.0, 0.3);
     const double xc = m.stick_slip_point();
     const double S = 1e-3 / ((1 - c.nu1 * c.nu1) / c.E1 + (1 - c.nu2 * c.nu2) / c.E2);
-    const double K = 1.5 * 0.3 * S / std::sqrt(xc), C = K / (1.5 * m1.mu());
+    const double K = 1.5 * 0.3 * S / std::sqrt(xc), C = 2e-3;
     // d >= 1e-5: x_c +- d carries x_c's round-off, 1e-16 / d of d
     for (double d : {1e-5, 1e-3, 0.1}) {
       EXPECT_NEAR((m.threshold(xc - d) - m.shear(xc - d)) / std::sqrt(d), K, 1e-9 * K) << d;

@@ -29,7 +29,8 @@ namespace {
 double stick_slip_point_of(double L) { return L * (0.4 + std::sqrt(2.0) / 100); }
 }  // namespace
 
-// K sqrt(x_c) = 1.5 F S: the shear at x = 0 is F S - 1.5 F S = -F S / 2 (header)
+// K sqrt(x_c) = 1.5 F S: the shear at x = 0 is F S - 1.5 F S = -F S / 2; C = 2 eps / sqrt(L):
+// the slip 2 eps L ((x - x_c) / L)^{3/2}, friction or not (header)
 ManufacturedFriction::ManufacturedFriction(const Material& body1, const Material& body2, double L, double friction)
     : ExactContact(body1, body2),
       L_(L),
@@ -37,7 +38,7 @@ ManufacturedFriction::ManufacturedFriction(const Material& body1, const Material
       xc_(stick_slip_point_of(L)),
       eps_(1e-3),
       S_(1e-3 * e_star(body1, body2)),
-      corner_(body1, body2, xc_, friction * S_ / (body1.mu() * std::sqrt(xc_))) {}
+      corner_(body1, body2, xc_, 2 * eps_ / std::sqrt(L), 1.5 * friction * S_ / std::sqrt(xc_)) {}
 
 Jet ManufacturedFriction::pressure_jet(double x) const { return Jet{S_, 0, 0, 0} + sine(0.3 * S_, x, L_); }
 

@@ -4,7 +4,7 @@
 //
 //   pressure    p(x)   = S (1 + 0.3 sin(pi xi)) > 0          (closed everywhere: [u.n] = 0)
 //   shear       tau(x) = sigma_12 = F p(x) - K (x_c - x)_+^{1/2},   K = 1.5 F S / sqrt(x_c)
-//   slip        j(x)   = u^1_x - u^2_x = C (x - x_c)_+^{3/2},        C = K / (1.5 mu1)
+//   slip        j(x)   = u^1_x - u^2_x = C (x - x_c)_+^{3/2},        C = 2 eps / sqrt(L)
 //
 // so that on x > x_c the bodies slip (j > 0) with tau = F p, the threshold, of the slip's sign,
 // and on x < x_c they stick (j = 0) with |tau| < F p (F p - tau = K sqrt(x_c - x) > 0, and

@@ -25,10 +25,11 @@ Jet2 harmonic(const Complex& zeta, double e, bool imaginary) {
 }
 }  // namespace
 
-StickSlipCorner::StickSlipCorner(const Material& body1, const Material& body2, double xc, double C)
-    : m1_(body1), m2_(body2), xc_(xc), C_(C) {
-  D_ = 1.5 * C * body1.mu() / body2.mu();
+StickSlipCorner::StickSlipCorner(const Material& body1, const Material& body2, double xc, double C, double K)
+    : m1_(body1), m2_(body2), xc_(xc), C_(C), K_(K) {
+  D_ = K / body2.mu();
   E_ = -1.5 * C * body1.lambda() / (body1.lambda() + 2 * body1.mu());
+  G_ = 1.5 * C - K / body1.mu();
 }
 
 StickSlipCorner::Local StickSlipCorner::local(int l, const Eigen::Vector2d& p) const {
@@ -42,10 +43,13 @@ StickSlipCorner::Local StickSlipCorner::local(int l, const Eigen::Vector2d& p) c
     const bool at_point = X == 0 && y == 0;
     const Jet2 g = at_point ? Jet2{} : harmonic(zeta, 1.5, false);  // Re zeta^{3/2}
     const Jet2 n = at_point ? Jet2{} : harmonic(zeta, 0.5, false);  // Re zeta^{1/2}
-    // u_x = C g; u_y = E y n
-    r.u = Eigen::Vector2d(C_ * g.f, E_ * y * n.f);
-    r.grad << C_ * g.fx, C_ * g.fy, E_ * y * n.fx, E_ * (n.f + y * n.fy);
-    r.hessian[0] << C_ * g.fxx, C_ * g.fxy, C_ * g.fxy, C_ * g.fyy;
+    const Jet2 m = at_point ? Jet2{} : harmonic(zeta, 0.5, true);   // Im zeta^{1/2}
+    // u_x = C g + G y m; u_y = E y n
+    r.u = Eigen::Vector2d(C_ * g.f + G_ * y * m.f, E_ * y * n.f);
+    r.grad << C_ * g.fx + G_ * y * m.fx, C_ * g.fy + G_ * (m.f + y * m.fy), E_ * y * n.fx, E_ * (n.f + y * n.fy);
+    const double mxy = m.fx + y * m.fxy;  // d2 (y m) / dx dy
+    r.hessian[0] << C_ * g.fxx + G_ * y * m.fxx, C_ * g.fxy + G_ * mxy, C_ * g.fxy + G_ * mxy,
+                    C_ * g.fyy + G_ * (2 * m.fy + y * m.fyy);
     r.hessian[1] << E_ * y * n.fxx, E_ * (n.fx + y * n.fxy), E_ * (n.fx + y * n.fxy), E_ * (2 * n.fy + y * n.fyy);
     return r;
   }
@@ -78,7 +82,7 @@ Eigen::Vector2d StickSlipCorner::div_sigma(int l, const Eigen::Vector2d& p) cons
 
 double StickSlipCorner::shear(double x) const {
   const double X = x - xc_;
-  return X < 0 ? -1.5 * m1_.mu() * C_ * std::sqrt(-X) : 0.0;
+  return X < 0 ? -K_ * std::sqrt(-X) : 0.0;
 }
 
 double StickSlipCorner::slip(double x) const {

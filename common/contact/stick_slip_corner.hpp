@@ -4,20 +4,21 @@
 // With X = x - x_c, zeta = X + i y in body 1 (y >= 0) and zeta' = X - i y in body 2 (y <= 0),
 // principal branches (the cut x < x_c lies on Gamma_c, approached from inside each body):
 //
-//   body 1:  u_x = C Re zeta^{3/2},       u_y = E y Re zeta^{1/2},
-//   body 2:  u_x = -D y Im zeta'^{1/2},   u_y = 0.
+//   body 1:  u_x = C Re zeta^{3/2} + G y Im zeta^{1/2},   u_y = E y Re zeta^{1/2},
+//   body 2:  u_x = -D y Im zeta'^{1/2},                     u_y = 0.
 //
-// On Gamma_c (y = 0): Re zeta^{3/2} = X_+^{3/2} and Re zeta^{1/2} = X_+^{1/2}, the y terms vanish,
-// and d/dy of each body's u_x is -(3/2) C Im zeta^{1/2} = -(3/2) C (-X)_+^{1/2} (body 1) and
-// -D (-X)_+^{1/2} (body 2). So, with D = (3/2) C mu1 / mu2 and E = -(3/2) C lambda1 / (lambda1 + 2 mu1):
+// On Gamma_c (y = 0): Re zeta^{3/2} = X_+^{3/2}, Re zeta^{1/2} = X_+^{1/2}, Im zeta^{1/2} =
+// (-X)_+^{1/2}, and the y terms vanish. d/dy of Re zeta^{3/2} is -(3/2) Im zeta^{1/2}, d/dy of
+// y Im zeta^{1/2} is Im zeta^{1/2}. So, with G = (3/2) C - K / mu1, D = K / mu2 and
+// E = -(3/2) C lambda1 / (lambda1 + 2 mu1):
 //
 //   slip   [u_T] = u^1_x - u^2_x = C (x - x_c)_+^{3/2},          [u.n] = 0,
-//   shear  sigma_12 = -K (x_c - x)_+^{1/2} from both sides,      K = (3/2) mu1 C,
-//   sigma_22 = lambda1 (3/2) C X_+^{1/2} + (lambda1 + 2 mu1) E X_+^{1/2} = 0 from both sides.
+//   shear  sigma_12 = -K (x_c - x)_+^{1/2} from both sides,
+//   sigma_22 = (lambda1 (3/2) C + (lambda1 + 2 mu1) E) X_+^{1/2} = 0 from both sides.
 //
-// Not an elastic field: its body force -div sigma is of order r^{-1/2} near (x_c, 0), square
-// integrable, and smooth elsewhere; u is in H^{5/2 - eps}, the regularity of a generic contact
-// edge (chapter 5's hertz-exact).
+// C and K are free: the slip's size and the shear's. Not an elastic field: its body force
+// -div sigma is of order r^{-1/2} near (x_c, 0), square integrable, and smooth elsewhere; u
+// is in H^{5/2 - eps}, the regularity of a generic contact edge (chapter 5's hertz-exact).
 #pragma once
 
 #include <Eigen/Dense>
@@ -28,8 +29,8 @@ namespace mortar {
 
 class StickSlipCorner {
  public:
-  // C > 0: the slip C (x - x_c)^{3/2}; the shear -(3/2) mu1 C sqrt(x_c - x)
-  StickSlipCorner(const Material& body1, const Material& body2, double xc, double C);
+  // the slip C (x - x_c)_+^{3/2} and the shear -K (x_c - x)_+^{1/2}
+  StickSlipCorner(const Material& body1, const Material& body2, double xc, double C, double K);
 
   Eigen::Vector2d u(int l, const Eigen::Vector2d& p) const;
   Eigen::Matrix2d grad_u(int l, const Eigen::Vector2d& p) const;  // d u_i / d x_j
@@ -47,7 +48,7 @@ class StickSlipCorner {
   Local local(int l, const Eigen::Vector2d& p) const;
 
   Material m1_, m2_;
-  double xc_, C_, D_, E_;
+  double xc_, C_, K_, D_, E_, G_;
 };
 
 }  // namespace mortar
