@@ -17,9 +17,8 @@ struct Pair {
 const Pair pairs[] = {{1, 0.3, 1, 0.3}, {1, 0.3, 3, 0.25}, {1e6, 0.2, 1, 0.45}};
 }  // namespace
 
-// The library's check (exact_contact_check.hpp) for what does not involve friction: grad u
-// against u, equilibrium against the body force, u on Gamma_c from inside each body; its
-// traction residual measures sigma_12 = tau here, checked in the next test instead.
+// The library's check (exact_contact_check.hpp): grad u against u, equilibrium against the
+// body force, u on Gamma_c from inside each body, sigma_22 = -p and sigma_12 = tau on Gamma_c.
 TEST(ManufacturedFriction, satisfies_equilibrium_and_grad_u_is_the_derivative_of_u) {
   for (double L : {1.0, 1e-3, 1e3})
     for (const Pair& c : pairs) {
@@ -30,7 +29,9 @@ TEST(ManufacturedFriction, satisfies_equilibrium_and_grad_u_is_the_derivative_of
       EXPECT_LT(r.boundary, 1e-12) << "L " << L << ", E1 " << c.E1;
       EXPECT_LT(r.closed_gap, 1e-12) << "L " << L << ", E1 " << c.E1;
       EXPECT_EQ(r.sign, 0.0);
-      EXPECT_GT(r.traction, 0.01);  // the shear is there: sigma_12 = tau != 0
+      // sigma_12 = tau on both sides, to round-off: in a body 1e6 times stiffer the slip's own
+      // stress, about mu1 C, is 6e5 times p, and cancels to K ~ p: 1e-16 of it is 1e-10 of p
+      EXPECT_LT(r.traction, 1e-9) << "L " << L << ", E1 " << c.E1;
     }
 }
 
@@ -71,4 +72,22 @@ TEST(ManufacturedFriction, sticks_below_the_threshold_and_slips_at_it_with_the_s
   }
   EXPECT_TRUE(shear_changes_sign);
   EXPECT_GT(m.slip(1.0), 0.0);
+}
+
+// The transition is the generic one: the margin F p - tau grows like sqrt(x_c - x) and the slip
+// like (x - x_c)^{3/2}, with the constants of the header (K sqrt(x_c) = 1.5 F S, C = 2 eps / sqrt(L)).
+// The earlier solution's margin grew like (x_c - x)^2, which this test refuses.
+TEST(ManufacturedFriction, the_stick_slip_transition_is_of_square_root_type) {
+  for (const Pair& c : pairs) {
+    const Material m1(c.E1, c.nu1), m2(c.E2, c.nu2);
+    const ManufacturedFriction m(m1, m2, 1.0, 0.3);
+    const double xc = m.stick_slip_point();
+    const double S = 1e-3 / ((1 - c.nu1 * c.nu1) / c.E1 + (1 - c.nu2 * c.nu2) / c.E2);
+    const double K = 1.5 * 0.3 * S / std::sqrt(xc), C = 2e-3;
+    // d >= 1e-5: x_c +- d carries x_c's round-off, 1e-16 / d of d
+    for (double d : {1e-5, 1e-3, 0.1}) {
+      EXPECT_NEAR((m.threshold(xc - d) - m.shear(xc - d)) / std::sqrt(d), K, 1e-9 * K) << d;
+      EXPECT_NEAR(m.slip(xc + d) / (d * std::sqrt(d)), C, 1e-9 * C) << d;
+    }
+  }
 }

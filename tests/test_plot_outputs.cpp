@@ -120,6 +120,28 @@ TEST(PlotOutputs, a_run_without_gnuplot_leaves_no_stale_figure) {
   fs::remove_all(folder);
 }
 
+// A reference slope anchored to a series with no positive point (every error exactly 0) is left
+// out of the script with a warning; the other slope is still drawn. Before, write_figure threw
+// and the run that had solved its problem ended with status 1.
+TEST(PlotOutputs, a_slope_with_nothing_to_anchor_to_is_left_out_not_fatal) {
+  const fs::path folder = fresh_folder("zero_anchor");
+  mortar::Figure fig = loglog_figure();
+  fig.series[0].y = {0.0, 0.0, 0.0};
+  testing::internal::CaptureStderr();
+  ASSERT_NO_THROW(mortar::write_figure(folder.string(), "errors", fig, false));
+  const std::string warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find("slope 1 left out"), std::string::npos) << warning;
+  const std::string gp = read(folder / "errors.gp");
+  EXPECT_EQ(gp.find("'slope 1'"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("ref0(x) with lines"), std::string::npos) << gp;  // slope 2, renumbered
+  EXPECT_NE(gp.find("'slope 2'"), std::string::npos) << gp;
+  if (have_gnuplot()) {
+    mortar::write_figure(folder.string(), "errors", fig, true);
+    expect_png_and_pdf(folder, "errors");
+  }
+  fs::remove_all(folder);
+}
+
 TEST(PlotOutputs, reference_slopes_differ_in_colour_and_dash) {
   std::set<std::string> colours, dashes;
   for (std::size_t k = 0; k < 4; ++k) {

@@ -8,10 +8,12 @@
 //   ch08_friction --law tresca                      # the same exact solution, Tresca's threshold F p
 //   ch08_friction --scene cattaneo                  # normal load, then shear in 10 steps: Cattaneo-Mindlin
 //   ch08_friction --scene cattaneo --q-ratio 0.95   # a stick zone of a few elements
+//   ch08_friction --scene cattaneo-exact            # the same path, exact: local rates of the shear
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 
+#include "common/contact/exact_contact_check.hpp"
 #include "common/study/timing_report.hpp"
 #include "comparisons.hpp"
 #include "figures.hpp"
@@ -42,8 +44,9 @@ int main(int argc, char** argv) {
       if (o.scene == "manufactured") {
         table.add(chapter08::manufactured_row(*r, exact));
       } else {
-        cattaneo = chapter08::compare_with_cattaneo(o, *r);
-        table.add(chapter08::cattaneo_row(*r, cattaneo.back()));
+        cattaneo = chapter08::compare_with_cattaneo(o, *r, scene);
+        table.add(scene.exact_steps.empty() ? chapter08::cattaneo_row(*r, cattaneo.back())
+                                            : chapter08::cattaneo_exact_row(*r, *scene.exact_steps.back(), cattaneo.back()));
       }
       finest = std::move(r);
     }
@@ -76,6 +79,12 @@ int main(int argc, char** argv) {
           .set("tangential_traction_rel_error_l2", c.shear_rel_error_l2)
           .set("hertz_pressure_rel_error_l2", c.hertz_pressure_rel_error_l2)
           .set("pressure_change_rel_l2", c.pressure_change_rel_l2);
+      if (!scene.exact_steps.empty()) {  // the field against the problem itself, without any solver
+        for (const std::string key : {"err_energy", "err_l2", "err_pressure", "err_tangential"})
+          results.set(key, table.column(key).back());
+        results.set("exact_solution_check",
+                    mortar::check_exact_contact(*scene.exact_steps.back(), scene.gap, o.L, o.H1, o.H2).worst());
+      }
       chapter08::write_cattaneo_csv(o.out + "/cattaneo.csv", cattaneo);
     }
     chapter08::write_newton_csv(o.out + "/newton.csv", f);
@@ -106,7 +115,7 @@ int main(int argc, char** argv) {
       curves = {[&](double x) { return exact.shear(x); }, [&](double x) { return exact.threshold(x); },
                 "exact shear τ", 0, 0};
     } else {
-      const chapter08::CattaneoStep& c = cattaneo.back();
+      const chapter08::CattaneoStep& c = cattaneo.back();  // the exact field's P and Q on cattaneo-exact
       const chapter08::CattaneoMindlin cm(c.P, c.Q, o.friction, chapter08::e_star(o), o.R, 0.5 * o.L);
       curves = {[cm](double x) { return cm.shear(x); }, {}, "Cattaneo-Mindlin q(x) at the computed P, Q",
                 0.5 * o.L - 1.4 * cm.half_width(), 0.5 * o.L + 1.4 * cm.half_width()};

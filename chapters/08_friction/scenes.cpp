@@ -1,6 +1,8 @@
 #include "scenes.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 
 namespace chapter08 {
 
@@ -27,7 +29,33 @@ mortar::SceneData pressed_and_sheared(const mortar::TwoBodies& bodies, double de
   return scene;
 }
 
+double cattaneo_exact_half_width(double L) { return L * std::sqrt(2.0) / 6; }
+
+namespace {
+// Step k of N prescribes the field of Q_k / (F P) = (k / N) q_ratio on every outer side: no load
+// and no free side, the field decides the rest (chapter 5's hertz-exact, with a shear).
+Scene cattaneo_exact_scene(const SceneParameters& p, const mortar::Material& body1, const mortar::Material& body2) {
+  Scene s;
+  s.name = p.name;
+  const double x0 = 0.5 * p.L, R = p.R;
+  s.gap = [x0, R](double x) { return (x - x0) * (x - x0) / (2 * R); };
+  s.threshold = [](double) { return 0.0; };  // Coulomb: F lambda_n
+  s.start_glued = true;
+  s.steps = 1 + p.load_steps;
+  for (int k = 0; k < s.steps; ++k)
+    s.exact_steps.push_back(std::make_shared<const mortar::CattaneoHalfPlanes>(
+        body1, body2, x0, cattaneo_exact_half_width(p.L), R, p.friction, static_cast<double>(k) / p.load_steps * p.q_ratio));
+  const auto fields = s.exact_steps;
+  s.step_data = [fields](const mortar::TwoBodies& bodies, int step, double) {
+    return mortar::manufactured_scene_all_sides(bodies, *fields[static_cast<std::size_t>(step)]);
+  };
+  s.limit_data = [fields](const mortar::TwoBodies& bodies) { return mortar::manufactured_scene_all_sides(bodies, *fields[0]); };
+  return s;
+}
+}  // namespace
+
 Scene make_scene(const SceneParameters& p, const mortar::ManufacturedFriction& exact) {
+  if (p.name == "cattaneo-exact") return cattaneo_exact_scene(p, exact.material(0), exact.material(1));
   Scene s;
   s.name = p.name;
   if (p.name == "manufactured") {

@@ -8,12 +8,19 @@
 //    body 1, Q_k = (k / N) q_ratio F P with P the normal force of step 0 (Cattaneo-Mindlin:
 //    normal load first, then the tangential one). The bottom of body 2 is clamped, the lateral
 //    sides free. Body 1 is held in x by friction alone: with Q > F P nothing can hold it.
+//  - cattaneo-exact: the same load path made exact, as chapter 5 made Hertz exact: each step k
+//    prescribes the half-planes' Cattaneo-Mindlin field of Q_k = (k / N) q_ratio F P on every
+//    outer side (common/contact/cattaneo_half_planes.hpp), with the half-width a = L sqrt(2) / 6
+//    of chapter 5's hertz-exact scene (never a node), no body force and the Hertz gap: each
+//    step's field is the exact solution of that step of the finite problem.
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "common/contact/cattaneo_half_planes.hpp"
 #include "common/contact/contact_scenes.hpp"
 #include "common/contact/manufactured_friction.hpp"
 
@@ -41,9 +48,17 @@ struct Scene {
   // The supports of the physical limit's K (README.md, "Speed"): the scene's own, except that a
   // body held in x by friction alone is clamped there too (K alone must be definite).
   std::function<mortar::SceneData(const mortar::TwoBodies& bodies)> limit_data;
+  // cattaneo-exact: the exact solution of each load step (empty for the other scenes)
+  std::vector<std::shared_ptr<const mortar::CattaneoHalfPlanes>> exact_steps;
 };
 
+// The exact manufactured solution serves the manufactured scene; the others read only its two
+// materials.
 Scene make_scene(const SceneParameters& p, const mortar::ManufacturedFriction& exact);
+
+// The half-width of cattaneo-exact's contact zone, L sqrt(2) / 6 (chapter 5's hertz-exact):
+// irrational, so no mesh with nodes at rational multiples of L has a node on its edges.
+double cattaneo_exact_half_width(double L);
 
 // Cattaneo's loads: the top of body 1 at u_y = -delta with a shear traction Q / L along it,
 // the bottom of body 2 clamped.

@@ -27,11 +27,31 @@ mortar::FrictionLaw law_of(const Options& o) {
   return o.law == "tresca" ? mortar::FrictionLaw::tresca : mortar::FrictionLaw::coulomb;
 }
 
+namespace {
+// cattaneo-exact: one material unless told (its field needs Dundurs' beta = 0, which it checks),
+// the box of the defaults, six levels from n0 = 8 (h1 = 1/8 to 1/256) for local rates; the
+// normal load is the field's own, not a displacement of the top
+void check_cattaneo_exact(mortar::OptionParser& parser, Options& o) {
+  if (!parser.given("E2")) o.E2 = o.E1;
+  if (!parser.given("nu2")) o.nu2 = o.nu1;
+  if (!parser.given("levels")) o.levels = 6;
+  if (parser.given("delta"))
+    parser.fail("delta", "the cattaneo-exact scene is loaded by its exact field (half-width L sqrt(2)/6), not by delta");
+  const auto dundurs = [](double E, double nu) { return (1 - 2 * nu) * 2 * (1 + nu) / E; };  // (1 - 2 nu) / mu
+  const double d1 = dundurs(o.E1, o.nu1), d2 = dundurs(o.E2, o.nu2);
+  if (std::fabs(d1 - d2) > 1e-12 * std::max(std::fabs(d1), std::fabs(d2)))
+    parser.fail(parser.given("nu2") ? "nu2" : "E2",
+                "the cattaneo-exact scene needs Dundurs' beta = 0, (1 - 2 nu1)/mu1 = (1 - 2 nu2)/mu2 (one material, "
+                "say): otherwise the shear moves the pressure and Cattaneo-Mindlin's field is no solution");
+}
+}  // namespace
+
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
   using mortar::Range;
-  parser.add_choice("scene", o.scene, {"manufactured", "cattaneo"},
+  parser.add_choice("scene", o.scene, {"manufactured", "cattaneo", "cattaneo-exact"},
                     "manufactured: exact Tresca/Coulomb solution with a stick and a slip zone; cattaneo: normal load, then "
-                    "shear in steps, against Cattaneo-Mindlin");
+                    "shear in steps, against Cattaneo-Mindlin; cattaneo-exact: the same path with the half-planes' "
+                    "Cattaneo-Mindlin field prescribed on every outer side, its exact solution");
   parser.add_choice("law", o.law, {"coulomb", "tresca"},
                     "friction law: threshold F lambda_n (coulomb) or the given F p (tresca; manufactured scene only)");
   parser.add_choice("solver", o.solver, {"newton", "fixed-point"},
@@ -82,9 +102,12 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
     if (!parser.given("n0")) o.n0 = 16;
     if (!parser.given("delta")) o.delta = 0.02;
     if (!parser.given("levels")) o.levels = 5;
-    if (o.law == "tresca") parser.fail("law", "the cattaneo scene is Coulomb's (its threshold is F lambda_n)");
-    if (!(o.friction > 0)) parser.fail("friction", "the cattaneo scene needs F > 0 (Q is a fraction of F P)");
     if (o.delta >= o.H1) parser.fail("delta", "delta must be small against H1 (linear elasticity)");
+  }
+  if (o.scene == "cattaneo-exact") check_cattaneo_exact(parser, o);
+  if (o.scene == "cattaneo" || o.scene == "cattaneo-exact") {
+    if (o.law == "tresca") parser.fail("law", "the cattaneo scenes are Coulomb's (their threshold is F lambda_n)");
+    if (!(o.friction > 0)) parser.fail("friction", "the cattaneo scenes need F > 0 (Q is a fraction of F P)");
     if (o.q_ratio >= 1)
       parser.fail("q-ratio", "Q >= F P is gross sliding: no stick zone is left, and friction cannot hold body 1 "
                              "(its only support in x); choose --q-ratio below 1");
@@ -188,15 +211,18 @@ mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::Manufacture
   return row;
 }
 
-std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const FrictionalLevel& r) {
+std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const FrictionalLevel& r, const Scene& scene) {
   std::vector<CattaneoStep> out;
   const StepResult& normal = r.steps.front();
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
     const StepResult& s = r.steps[k];
     CattaneoStep c;
     c.step = static_cast<int>(k);
-    c.P = s.normal_force;
-    c.Q = s.shear_force;
+    // Cattaneo-Mindlin at the computed forces; on the exact scene at the field's own, so that
+    // the reference is the finite problem's solution
+    const bool exact = k < scene.exact_steps.size();
+    c.P = exact ? scene.exact_steps[k]->total_force(o.L) : s.normal_force;
+    c.Q = exact ? scene.exact_steps[k]->shear_force() : s.shear_force;
     c.q_ratio = c.P > 0 ? c.Q / (o.friction * c.P) : 0.0;
     c.newton_steps = s.newton_steps;
     c.lu_steps = s.solution.lu_steps;
@@ -227,6 +253,32 @@ std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const Friction
     out.push_back(c);
   }
   return out;
+}
+
+mortar::Row cattaneo_exact_row(const FrictionalLevel& r, const mortar::CattaneoHalfPlanes& exact, const CattaneoStep& last) {
+  mortar::ErrorNorms norms;
+  const StepResult& s = r.last();
+  for (int l = 0; l < 2; ++l)
+    norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(s.u, l), exact.exact(l));
+  const auto p = [&](double x) { return exact.pressure(x); };
+  const auto q = [&](double x) { return exact.shear(x); };
+  const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;
+  return {{"h", std::max(r.h1, r.h2)},
+          {"h1", r.h1},
+          {"h2", r.h2},
+          {"dofs", static_cast<double>(r.bodies.num_dofs())},
+          {"time_s", r.time_s},
+          {"limit_s", r.limit_s},
+          {"err_energy", norms.relative_energy()},
+          {"err_l2", norms.relative_l2()},
+          {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)},
+          {"err_tangential", mortar::l2_error(s.shear, q) / mortar::l2_norm(s.shear, q)},
+          {"stick_half_width_m", last.c_h},
+          {"stick_half_width_error_h", std::fabs(last.c_h - last.c) / h1},
+          {"pressure_change", last.pressure_change_rel_l2},
+          {"newton_steps_max", static_cast<double>(r.newton_steps_max())},
+          {"newton_steps_total", static_cast<double>(r.newton_steps_total())},
+          {"lu_steps", static_cast<double>(r.lu_steps_total())}};
 }
 
 mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last) {

@@ -1,6 +1,7 @@
 // Chapter 8's options and what each level is measured against: the manufactured scene's exact
 // solution (energy and L2 errors, both multipliers in L2, the stick-slip point), and
-// Cattaneo-Mindlin (the stick half-width and the shear, at every load step).
+// Cattaneo-Mindlin (the stick half-width and the shear, at every load step; on cattaneo-exact
+// also u and both multipliers against the exact field).
 #pragma once
 
 #include <string>
@@ -52,8 +53,12 @@ struct CattaneoStep {
   int newton_steps = 0, lu_steps = 0, stick_nodes = 0, slip_nodes = 0;
   double limit_ratio = 0;                 // the load step's time over the level's physical limit
 };
-std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const FrictionalLevel& r);
+// At each step's computed P and Q (cattaneo), or at the exact field's (cattaneo-exact).
+std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const FrictionalLevel& r, const Scene& scene);
 mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last);
+// cattaneo-exact: u, lambda_n and lambda_t of the last step against its exact field, and the
+// stick half-width.
+mortar::Row cattaneo_exact_row(const FrictionalLevel& r, const mortar::CattaneoHalfPlanes& exact, const CattaneoStep& last);
 void write_cattaneo_csv(const std::string& path, const std::vector<CattaneoStep>& steps);
 // The residual and the stick and slip counts after every Newton step of every load step.
 void write_newton_csv(const std::string& path, const FrictionalLevel& r);

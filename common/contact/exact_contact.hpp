@@ -1,12 +1,14 @@
-// An exact solution of frictionless two-body contact on the course's geometry (body 1 above
-// Gamma_c = (0, L) x {0}, body 2 below): what convergence studies measure against. Two kinds:
+// An exact solution of two-body contact on the course's geometry (body 1 above Gamma_c =
+// (0, L) x {0}, body 2 below): what convergence studies measure against. Three kinds:
 //  - manufactured_contact.hpp: chapter 4's ansatz, with body forces (the bilateral and
 //    signorini scenes);
 //  - hertz_half_planes.hpp: each body a piece of an elastic half-plane under the Hertz
-//    pressure, no body force (chapter 5's hertz-exact scene).
+//    pressure, no body force (chapter 5's hertz-exact scene);
+//  - manufactured_friction.hpp and cattaneo_half_planes.hpp: with friction, a shear on Gamma_c
+//    (chapter 8).
 // Studies read u and grad u (errors, Dirichlet data), the body force f = -div sigma (loads) and
-// the contact pressure p = -sigma_N on Gamma_c; check_exact_contact tests them against the
-// contact problem itself.
+// the contact pressure p = -sigma_N and the shear sigma_12 on Gamma_c; check_exact_contact tests
+// them against the contact problem itself.
 #pragma once
 
 #include <Eigen/Dense>
@@ -32,6 +34,8 @@ class ExactContact {
   // The points of Gamma_c where p is not smooth (the edges of a contact zone, where p behaves
   // like a square root): a quadrature of p must cut there or lose its order
   virtual std::vector<double> pressure_kinks() const { return {}; }
+  // the shear sigma_12 on Gamma_c (chapter 8's lambda_t): 0 without friction
+  virtual double shear(double) const { return 0.0; }
   // int_0^L p: 8-point Gauss on 64 pieces unless a kind knows it in closed form
   virtual double total_force(double L) const;
 

@@ -92,7 +92,8 @@ ExactContactResiduals check_exact_contact(const ExactContact& exact, const std::
     const double p = exact.pressure(x);
     for (int l = 0; l < 2; ++l) {
       const Eigen::Matrix2d sigma = exact.stress(l, {x, 0.0});
-      r.traction = std::max({r.traction, std::fabs(sigma(1, 1) + p) / p_max, std::fabs(sigma(0, 1)) / p_max});
+      r.traction = std::max({r.traction, std::fabs(sigma(1, 1) + p) / p_max,
+                             std::fabs(sigma(0, 1) - exact.shear(x)) / p_max});
     }
     r.sign = std::max(r.sign, std::max(0.0, -p) / p_max);
     const double excess = exact.normal_jump(x) - gap(x);

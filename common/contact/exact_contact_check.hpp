@@ -2,10 +2,10 @@
 // Checked at sample points against the equations themselves, independently of any solver:
 // grad u against finite differences of u (u is also the Dirichlet data), equilibrium (1) by
 // finite differences of sigma, u on Gamma_c against its limit from inside each body (the
-// branches of a field with a cut there), the tractions on Gamma_c (4), (5), the sign of the
-// pressure and the complementarity (9)-(11) with the initial gap g: [u.n] = g where p > 0, no
-// penetration [u.n] <= g where p = 0. Each residual is relative to its own scale; a scene
-// reports the largest.
+// branches of a field with a cut there), the tractions on Gamma_c (4), (5) (sigma_12 is the
+// solution's shear: 0 without friction), the sign of the pressure and the complementarity
+// (9)-(11) with the initial gap g: [u.n] = g where p > 0, no penetration [u.n] <= g where p = 0.
+// Each residual is relative to its own scale; a scene reports the largest.
 #pragma once
 
 #include <functional>
@@ -18,7 +18,7 @@ struct ExactContactResiduals {  // each body's residuals relative to that body's
   double gradient = 0;     // |grad u - D_h u| / max |grad u|
   double equilibrium = 0;  // |div sigma + f| d / max |sigma|, d the point's distance to Gamma_c
   double boundary = 0;     // |u(x, 0) - its limit from inside the body| / max |u|, on Gamma_c
-  double traction = 0;     // |sigma_yy + p|, |sigma_xy| on Gamma_c (both sides) / max p
+  double traction = 0;     // |sigma_yy + p|, |sigma_xy - shear| on Gamma_c (both sides) / max p
   double sign = 0;         // max(0, -p) / max p
   double closed_gap = 0;   // |[u.n] - g| where p > 0, / the size of u_y and g on Gamma_c
   double penetration = 0;  // max(0, [u.n] - g) where p = 0, same scale

@@ -1,37 +1,15 @@
 #include "common/contact/hertz_half_planes.hpp"
 
 #include <cmath>
-#include <complex>
 #include <stdexcept>
 #include <string>
+
+#include "common/contact/elliptic_edge_load.hpp"
 
 namespace mortar {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
-using Complex = std::complex<double>;
-
-// Phi', Phi'' and Phi''' at zeta = X + i z (header). On the edge z = 0 the imaginary part must
-// be +0, the limit from inside the body: it picks the branches of S and of the logarithm there
-// (for X < -a, zeta + S is negative and its logarithm has imaginary part +pi).
-struct Potential {
-  Complex d1, d2, d3;
-};
-
-Potential potential(double X, double z, double a, double p0) {
-  const Complex zeta(X, z + 0.0), minus_i_k(0.0, -p0 / a);  // z + 0.0: never -0
-  const Complex S = std::sqrt(zeta - a) * std::sqrt(zeta + a);
-  // zeta - S = a^2 / (zeta + S): the same number without the cancellation of two large ones
-  // far from the zone (|zeta + S| >= a for z >= 0)
-  const Complex zeta_minus_S = a * a / (zeta + S);
-  Potential f;
-  f.d1 = minus_i_k * (0.5 * zeta * zeta_minus_S + 0.5 * a * a * std::log((zeta + S) / a));
-  f.d2 = minus_i_k * zeta_minus_S;
-  // Phi''' = -i (p0/a) (1 - zeta/S) = i (p0/a) a^2 / ((zeta + S) S), written without the
-  // cancellation; infinite at the contact edges, it only enters multiplied by z
-  f.d3 = z > 0 ? -minus_i_k * zeta_minus_S / S : Complex(0.0, 0.0);
-  return f;
-}
 }  // namespace
 
 HertzHalfPlanes::HertzHalfPlanes(const Material& body1, const Material& body2, double x0, double a, double R)
@@ -48,7 +26,7 @@ HertzHalfPlanes::HertzHalfPlanes(const Material& body1, const Material& body2, d
 }
 
 Eigen::Vector2d HertzHalfPlanes::half_plane_displacement(int l, double X, double z) const {
-  const Potential f = potential(X, z, a_, p0_);
+  const EllipticEdgeLoad f = elliptic_edge_load(X, z, a_, p0_);  // Phi', Phi'', Phi'''
   const double nu = material(l).nu(), two_mu = 2 * material(l).mu();
   const double phi_x = f.d1.real(), phi_z = -f.d1.imag();
   const double phi_xz = -f.d2.imag(), phi_zz = -f.d2.real();
@@ -56,7 +34,7 @@ Eigen::Vector2d HertzHalfPlanes::half_plane_displacement(int l, double X, double
 }
 
 Eigen::Matrix2d HertzHalfPlanes::half_plane_gradient(int l, double X, double z) const {
-  const Potential f = potential(X, z, a_, p0_);
+  const EllipticEdgeLoad f = elliptic_edge_load(X, z, a_, p0_);  // Phi', Phi'', Phi'''
   const double nu = material(l).nu(), two_mu = 2 * material(l).mu();
   const double phi_xx = f.d2.real(), phi_xz = -f.d2.imag(), phi_zz = -f.d2.real();
   const double phi_xxz = -f.d3.imag(), phi_xzz = -f.d3.real(), phi_zzz = f.d3.imag();

@@ -13,8 +13,9 @@
 // so sigma_xz = 0 and sigma_zz = -phi_zz on the edge z = 0. phi = Re Phi(zeta), zeta = X + i z,
 // with Phi'' = -i (p0/a) (zeta - S), S = sqrt(zeta - a) sqrt(zeta + a) (S ~ zeta at infinity,
 // analytic for z > 0): phi_zz = -Re Phi'' is the harmonic function equal to p on the edge and
-// decaying like 1/|zeta|. Each body's displacement is fixed up to a rigid motion: the programs
-// take U = 0 at (x0, 0). The edge displacements then close the parabola exactly:
+// decaying like 1/|zeta| (elliptic_edge_load.hpp, with b = a and k = p0). Each body's
+// displacement is fixed up to a rigid motion: the programs take U = 0 at (x0, 0). The edge
+// displacements then close the parabola exactly:
 //
 //   [u.n](x) = u^2_y - u^1_y = X^2 / (2R)  on |X| <= a,   with p0 = a E* / (2R),
 //   1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2,

@@ -17,17 +17,6 @@ Jet cosine(double a, double x, double L) {
   const double k = pi / L, s = std::sin(k * x), c = std::cos(k * x);
   return {a * c, -a * k * s, -a * k * k * c, a * k * k * k * s};
 }
-// a (sign (x - x0) / L)_+^n, sign = +1 (beyond x0) or -1 (before it)
-Jet power(double a, double x, double x0, double L, int n, double sign) {
-  const double t = sign * (x - x0) / L;
-  if (t <= 0) return {};
-  Jet j;
-  j.f = a * std::pow(t, n);
-  j.d1 = a * n * std::pow(t, n - 1) * sign / L;
-  j.d2 = n >= 2 ? a * n * (n - 1) * std::pow(t, n - 2) / (L * L) : 0.0;
-  j.d3 = n >= 3 ? a * n * (n - 1) * (n - 2) * std::pow(t, n - 3) * sign / (L * L * L) : 0.0;
-  return j;
-}
 Jet operator+(Jet a, const Jet& b) { return {a.f + b.f, a.d1 + b.d1, a.d2 + b.d2, a.d3 + b.d3}; }
 Jet operator*(double s, Jet a) { return {s * a.f, s * a.d1, s * a.d2, s * a.d3}; }
 
@@ -36,23 +25,28 @@ double e_star(const Material& a, const Material& b) {
 }
 }  // namespace
 
+namespace {
+double stick_slip_point_of(double L) { return L * (0.4 + std::sqrt(2.0) / 100); }
+}  // namespace
+
+// K sqrt(x_c) = 1.5 F S: the shear at x = 0 is F S - 1.5 F S = -F S / 2; C = 2 eps / sqrt(L):
+// the slip 2 eps L ((x - x_c) / L)^{3/2}, friction or not (header)
 ManufacturedFriction::ManufacturedFriction(const Material& body1, const Material& body2, double L, double friction)
     : ExactContact(body1, body2),
       L_(L),
       F_(friction),
-      xc_(L * (0.4 + std::sqrt(2.0) / 100)),
+      xc_(stick_slip_point_of(L)),
       eps_(1e-3),
-      S_(1e-3 * e_star(body1, body2)) {}
+      S_(1e-3 * e_star(body1, body2)),
+      corner_(body1, body2, xc_, 2 * eps_ / std::sqrt(L), 1.5 * friction * S_ / std::sqrt(xc_)) {}
 
 Jet ManufacturedFriction::pressure_jet(double x) const { return Jet{S_, 0, 0, 0} + sine(0.3 * S_, x, L_); }
 
-Jet ManufacturedFriction::shear_jet(double x) const {
-  return F_ * (pressure_jet(x) + power(-8 * S_, x, xc_, L_, 2, -1.0));
-}
+Jet ManufacturedFriction::shear_jet(double x) const { return F_ * pressure_jet(x); }
 
 double ManufacturedFriction::pressure(double x) const { return pressure_jet(x).f; }
-double ManufacturedFriction::shear(double x) const { return shear_jet(x).f; }
-double ManufacturedFriction::slip(double x) const { return power(2 * L_ * eps_, x, xc_, L_, 3, 1.0).f; }
+double ManufacturedFriction::shear(double x) const { return shear_jet(x).f + corner_.shear(x); }
+double ManufacturedFriction::slip(double x) const { return corner_.slip(x); }
 double ManufacturedFriction::threshold(double x) const { return F_ * pressure(x); }
 
 ManufacturedFriction::Profiles ManufacturedFriction::profiles(int l, double x) const {
@@ -61,8 +55,7 @@ ManufacturedFriction::Profiles ManufacturedFriction::profiles(int l, double x) c
   Profiles q;
   q.c = cosine(0.5 * L_ * eps_, x, L_);
   q.A = sine(0.3 * L_ * eps_, x, L_);
-  if (l == 0) q.A = q.A + power(2 * L_ * eps_, x, xc_, L_, 3, 1.0);
-  // sigma_12 = mu (P + c') = tau on y = 0
+  // sigma_12 = mu (P + c') = F p on y = 0 (the corner adds the rest of tau)
   const Jet tau = shear_jet(x), p = pressure_jet(x);
   q.P = {tau.f / mu - q.c.d1, tau.d1 / mu - q.c.d2, tau.d2 / mu - q.c.d3, 0};
   // sigma_22 = lambda A' + (lambda + 2 mu) Q = -p on y = 0
@@ -76,7 +69,7 @@ ManufacturedFriction::Profiles ManufacturedFriction::profiles(int l, double x) c
 Eigen::Vector2d ManufacturedFriction::u(int l, const Eigen::Vector2d& p) const {
   const Profiles q = profiles(l, p.x());
   const double y = p.y();
-  return {q.A.f + y * q.P.f + y * y * q.R.f, q.c.f + y * q.Q.f + y * y * q.T.f};
+  return Eigen::Vector2d(q.A.f + y * q.P.f + y * y * q.R.f, q.c.f + y * q.Q.f + y * y * q.T.f) + corner_.u(l, p);
 }
 
 Eigen::Matrix2d ManufacturedFriction::grad_u(int l, const Eigen::Vector2d& p) const {
@@ -85,7 +78,7 @@ Eigen::Matrix2d ManufacturedFriction::grad_u(int l, const Eigen::Vector2d& p) co
   Eigen::Matrix2d g;
   g << q.A.d1 + y * q.P.d1 + y * y * q.R.d1, q.P.f + 2 * y * q.R.f,
        q.c.d1 + y * q.Q.d1 + y * y * q.T.d1, q.Q.f + 2 * y * q.T.f;
-  return g;
+  return g + corner_.grad_u(l, p);
 }
 
 Eigen::Vector2d ManufacturedFriction::body_force(int l, const Eigen::Vector2d& p) const {
@@ -97,7 +90,7 @@ Eigen::Vector2d ManufacturedFriction::body_force(int l, const Eigen::Vector2d& p
                        mu * (2 * q.R.f + q.Q.d1 + 2 * y * q.T.d1);
   const double div_y = mu * (q.P.d1 + 2 * y * q.R.d1 + q.c.d2 + y * q.Q.d2 + y * y * q.T.d2) +
                        lambda * (q.P.d1 + 2 * y * q.R.d1) + (lambda + 2 * mu) * 2 * q.T.f;
-  return {-div_x, -div_y};
+  return Eigen::Vector2d(-div_x, -div_y) - corner_.div_sigma(l, p);
 }
 
 }  // namespace mortar

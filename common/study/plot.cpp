@@ -139,7 +139,9 @@ void fix_creation_date(const std::filesystem::path& pdf) {
   std::ofstream(pdf, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-// C with C x0^p = (1 - offset) y(x0) at the anchor series' smallest x (or largest: at_coarsest)
+// C with C x0^p = (1 - offset) y(x0) at the anchor series' smallest x (or largest: at_coarsest);
+// empty when the series has no point with x > 0 and y > 0 (a measured error of exactly 0, say):
+// such a line has nothing to pass through, and the figure is drawn without it
 std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size_t k) {
   if (r.anchor < 0 || r.anchor >= static_cast<int>(fig.series.size()))
     throw std::invalid_argument("reference slope anchored to a missing series");
@@ -150,12 +152,29 @@ std::string slope_function(const Figure& fig, const ReferenceSlope& r, std::size
       x0 = s.x[i];
       y0 = s.y[i];
     }
-  if (!std::isfinite(x0)) throw std::invalid_argument("reference slope: anchor series has no positive point");
+  if (!std::isfinite(x0)) return "";
   std::ostringstream f;
   f.precision(12);
   f << "ref" << k << "(x) = " << (1 - r.offset) * y0 / std::pow(x0, r.slope) << " * x**("
     << r.slope << ")\n";
   return f.str();
+}
+
+// The reference slopes of a figure that can be drawn; a warning on stderr names each one left out.
+std::vector<std::pair<ReferenceSlope, std::string>> drawable_slopes(const Figure& fig, const std::string& name,
+                                                                    std::size_t& next) {
+  std::vector<std::pair<ReferenceSlope, std::string>> out;
+  for (const ReferenceSlope& r : fig.slopes) {
+    const std::string f = slope_function(fig, r, next);
+    if (f.empty()) {
+      std::fprintf(stderr, "warning: figure %s: reference slope %g left out (series '%s' has no positive point)\n",
+                   name.c_str(), r.slope, fig.series[r.anchor].title.c_str());
+      continue;
+    }
+    out.emplace_back(r, f);
+    ++next;
+  }
+  return out;
 }
 }  // namespace
 
@@ -255,7 +274,8 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
       gp << "set y2label '" << escape(fig.y2label) << "'\nset ytics nomirror\nset y2tics\n";
     for (const std::string& c : fig.settings) gp << c << "\n";
     const std::size_t first_slope = slope;
-    for (const ReferenceSlope& r : fig.slopes) gp << slope_function(fig, r, slope++);
+    const auto slopes = drawable_slopes(fig, name, slope);
+    for (const auto& r : slopes) gp << r.second;
     gp << "plot ";
     for (std::size_t s = 0; s < fig.series.size(); ++s) {
       const Series& ser = fig.series[s];
@@ -263,8 +283,8 @@ void write_figure(const std::string& folder, const std::string& name, const Figu
          << (ser.right_axis ? " axes x1y2" : "") << " with " << ser.style << " " << ser.extra << " title '"
          << escape(ser.title) << "'";
     }
-    for (std::size_t k = 0; k < fig.slopes.size(); ++k) {
-      const auto& r = fig.slopes[k];
+    for (std::size_t k = 0; k < slopes.size(); ++k) {
+      const ReferenceSlope& r = slopes[k].first;
       std::ostringstream label;
       label << (r.label.empty() ? "slope " : r.label);
       if (r.label.empty()) label << r.slope;

@@ -24,6 +24,8 @@ struct Series {
 // A dashed line C h^slope through the finest (smallest x) point of series `anchor`, shifted
 // down by `offset` so it does not hide the data; or, with `at_coarsest`, through its coarsest
 // (largest x) point: a bound drawn there cannot sit above the finer measurements by construction.
+// When the anchor series has no point with x > 0 and y > 0 (an error of exactly 0 on a log axis),
+// the figure is drawn without that line and a warning names it: a picture never stops a run.
 struct ReferenceSlope {
   double slope = 1;
   int anchor = 0;
