@@ -176,11 +176,27 @@ double stick_slip_point(const FrictionalLevel& r) {
   return z.empty ? 0.0 : 0.5 * (z.right_active + z.right_inactive);
 }
 
-mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::ManufacturedFriction& exact) {
+// The columns every exact scene's row starts with: the sizes, the time against the limit, and
+// the relative errors of u (energy, L2) and of the pressure against an exact solution.
+mortar::Row exact_scene_row(const FrictionalLevel& r, const mortar::ExactContact& exact) {
   mortar::ErrorNorms norms;
   const StepResult& s = r.last();
   for (int l = 0; l < 2; ++l)
     norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(s.u, l), exact.exact(l));
+  const auto p = [&](double x) { return exact.pressure(x); };
+  return {{"h", std::max(r.h1, r.h2)},
+          {"h1", r.h1},
+          {"h2", r.h2},
+          {"dofs", static_cast<double>(r.bodies.num_dofs())},
+          {"time_s", r.time_s},
+          {"limit_s", r.limit_s},
+          {"err_energy", norms.relative_energy()},
+          {"err_l2", norms.relative_l2()},
+          {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)}};
+}
+
+mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::ManufacturedFriction& exact) {
+  const StepResult& s = r.last();
   const auto p = [&](double x) { return exact.pressure(x); };
   const auto tau = [&](double x) { return exact.shear(x); };
   const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;  // of the non-mortar trace
@@ -190,17 +206,9 @@ mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::Manufacture
     stick += st == mortar::NodeStatus::stick;
     slip += st == mortar::NodeStatus::slip;
   }
-  mortar::Row row{{"h", std::max(r.h1, r.h2)},
-          {"h1", r.h1},
-          {"h2", r.h2},
-          {"dofs", static_cast<double>(r.bodies.num_dofs())},
-          {"time_s", r.time_s},
-          {"limit_s", r.limit_s},
-          {"err_energy", norms.relative_energy()},
-          {"err_l2", norms.relative_l2()},
-          {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)},
-          // against the pressure's norm: the shear's own is zero without friction
-          {"err_tangential", mortar::l2_error(s.shear, tau) / mortar::l2_norm(s.pressure, p)}};
+  mortar::Row row = exact_scene_row(r, exact);
+  // against the pressure's norm: the shear's own is zero without friction
+  row.push_back({"err_tangential", mortar::l2_error(s.shear, tau) / mortar::l2_norm(s.pressure, p)});
   if (exact.friction() > 0)  // without friction no node sticks, and x_c means nothing
     row.insert(row.end(), {{"stick_slip_point_error_m", xc_error}, {"stick_slip_point_error_h", xc_error / h1}});
   row.insert(row.end(), {
@@ -256,29 +264,19 @@ std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const Friction
 }
 
 mortar::Row cattaneo_exact_row(const FrictionalLevel& r, const mortar::CattaneoHalfPlanes& exact, const CattaneoStep& last) {
-  mortar::ErrorNorms norms;
   const StepResult& s = r.last();
-  for (int l = 0; l < 2; ++l)
-    norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(s.u, l), exact.exact(l));
-  const auto p = [&](double x) { return exact.pressure(x); };
   const auto q = [&](double x) { return exact.shear(x); };
   const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;
-  return {{"h", std::max(r.h1, r.h2)},
-          {"h1", r.h1},
-          {"h2", r.h2},
-          {"dofs", static_cast<double>(r.bodies.num_dofs())},
-          {"time_s", r.time_s},
-          {"limit_s", r.limit_s},
-          {"err_energy", norms.relative_energy()},
-          {"err_l2", norms.relative_l2()},
-          {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)},
+  mortar::Row row = exact_scene_row(r, exact);
+  row.insert(row.end(), {
           {"err_tangential", mortar::l2_error(s.shear, q) / mortar::l2_norm(s.shear, q)},
           {"stick_half_width_m", last.c_h},
           {"stick_half_width_error_h", std::fabs(last.c_h - last.c) / h1},
           {"pressure_change", last.pressure_change_rel_l2},
           {"newton_steps_max", static_cast<double>(r.newton_steps_max())},
           {"newton_steps_total", static_cast<double>(r.newton_steps_total())},
-          {"lu_steps", static_cast<double>(r.lu_steps_total())}};
+          {"lu_steps", static_cast<double>(r.lu_steps_total())}});
+  return row;
 }
 
 mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last) {
