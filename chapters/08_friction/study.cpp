@@ -176,23 +176,29 @@ double stick_slip_point(const FrictionalLevel& r) {
   return z.empty ? 0.0 : 0.5 * (z.right_active + z.right_inactive);
 }
 
-// The columns every exact scene's row starts with: the sizes, the time against the limit, and
-// the relative errors of u (energy, L2) and of the pressure against an exact solution.
+// The columns every row starts with: the sizes and the time against the limit.
+mortar::Row level_columns(const FrictionalLevel& r) {
+  return {{"h", std::max(r.h1, r.h2)},
+          {"h1", r.h1},
+          {"h2", r.h2},
+          {"dofs", static_cast<double>(r.bodies.num_dofs())},
+          {"time_s", r.time_s},
+          {"limit_s", r.limit_s}};
+}
+
+// The columns of a scene with an exact solution: level_columns, then the relative errors of u
+// (energy, L2) and of the pressure.
 mortar::Row exact_scene_row(const FrictionalLevel& r, const mortar::ExactContact& exact) {
   mortar::ErrorNorms norms;
   const StepResult& s = r.last();
   for (int l = 0; l < 2; ++l)
     norms += mortar::error_norms(r.bodies.body(l).mesh, r.bodies.body(l).material, r.bodies.part(s.u, l), exact.exact(l));
   const auto p = [&](double x) { return exact.pressure(x); };
-  return {{"h", std::max(r.h1, r.h2)},
-          {"h1", r.h1},
-          {"h2", r.h2},
-          {"dofs", static_cast<double>(r.bodies.num_dofs())},
-          {"time_s", r.time_s},
-          {"limit_s", r.limit_s},
-          {"err_energy", norms.relative_energy()},
-          {"err_l2", norms.relative_l2()},
-          {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)}};
+  mortar::Row row = level_columns(r);
+  row.insert(row.end(), {{"err_energy", norms.relative_energy()},
+                         {"err_l2", norms.relative_l2()},
+                         {"err_pressure", mortar::l2_error(s.pressure, p) / mortar::l2_norm(s.pressure, p)}});
+  return row;
 }
 
 mortar::Row manufactured_row(const FrictionalLevel& r, const mortar::ManufacturedFriction& exact) {
@@ -263,39 +269,34 @@ std::vector<CattaneoStep> compare_with_cattaneo(const Options& o, const Friction
   return out;
 }
 
+// The last columns of both Cattaneo rows: the stick zone, the pressure's change under the
+// shear, the Newton and LU steps of the level.
+void append_stick_zone_and_steps(mortar::Row& row, const FrictionalLevel& r, const CattaneoStep& last) {
+  const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;
+  row.insert(row.end(), {{"stick_half_width_m", last.c_h},
+                         {"stick_half_width_error_h", std::fabs(last.c_h - last.c) / h1},
+                         {"pressure_change", last.pressure_change_rel_l2},
+                         {"newton_steps_max", static_cast<double>(r.newton_steps_max())},
+                         {"newton_steps_total", static_cast<double>(r.newton_steps_total())},
+                         {"lu_steps", static_cast<double>(r.lu_steps_total())}});
+}
+
 mortar::Row cattaneo_exact_row(const FrictionalLevel& r, const mortar::CattaneoHalfPlanes& exact, const CattaneoStep& last) {
   const StepResult& s = r.last();
   const auto q = [&](double x) { return exact.shear(x); };
-  const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;
   mortar::Row row = exact_scene_row(r, exact);
-  row.insert(row.end(), {
-          {"err_tangential", mortar::l2_error(s.shear, q) / mortar::l2_norm(s.shear, q)},
-          {"stick_half_width_m", last.c_h},
-          {"stick_half_width_error_h", std::fabs(last.c_h - last.c) / h1},
-          {"pressure_change", last.pressure_change_rel_l2},
-          {"newton_steps_max", static_cast<double>(r.newton_steps_max())},
-          {"newton_steps_total", static_cast<double>(r.newton_steps_total())},
-          {"lu_steps", static_cast<double>(r.lu_steps_total())}});
+  row.push_back({"err_tangential", mortar::l2_error(s.shear, q) / mortar::l2_norm(s.shear, q)});
+  append_stick_zone_and_steps(row, r, last);
   return row;
 }
 
 mortar::Row cattaneo_row(const FrictionalLevel& r, const CattaneoStep& last) {
-  const double h1 = r.gamma.nonmortar == 0 ? r.h1 : r.h2;
-  return {{"h", std::max(r.h1, r.h2)},
-          {"h1", r.h1},
-          {"h2", r.h2},
-          {"dofs", static_cast<double>(r.bodies.num_dofs())},
-          {"time_s", r.time_s},
-          {"limit_s", r.limit_s},
-          {"err_tangential_traction", last.shear_rel_error_l2},
-          {"err_hertz_pressure", last.hertz_pressure_rel_error_l2},
-          {"q_ratio", last.q_ratio},
-          {"stick_half_width_m", last.c_h},
-          {"stick_half_width_error_h", std::fabs(last.c_h - last.c) / h1},
-          {"pressure_change", last.pressure_change_rel_l2},
-          {"newton_steps_max", static_cast<double>(r.newton_steps_max())},
-          {"newton_steps_total", static_cast<double>(r.newton_steps_total())},
-          {"lu_steps", static_cast<double>(r.lu_steps_total())}};
+  mortar::Row row = level_columns(r);
+  row.insert(row.end(), {{"err_tangential_traction", last.shear_rel_error_l2},
+                         {"err_hertz_pressure", last.hertz_pressure_rel_error_l2},
+                         {"q_ratio", last.q_ratio}});
+  append_stick_zone_and_steps(row, r, last);
+  return row;
 }
 
 void write_cattaneo_csv(const std::string& path, const std::vector<CattaneoStep>& steps) {
