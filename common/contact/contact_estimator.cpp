@@ -118,8 +118,8 @@ std::vector<int> trace_edge_triangles(const std::vector<MeshEdge>& edges, const 
   return triangle;
 }
 
-// Volume: h_T^2 / E ||f + div sigma_h||_T^2, div sigma_h = 0 on P1 (Hild-Nicaise's eta_1T, the
-// interior residual; squared and divided by E so that eta has the energy norm's units).
+// Volume: h_T^2 / E ||f + div sigma_h||_T^2, div sigma_h = 0 on P1 (the interior residual of Hild
+// and Nicaise's estimator, squared and divided by E so that eta has the energy norm's units).
 void volume_terms(const Mesh& mesh, double E, const VectorField& f, int l, Sink& sink) {
   if (!f) return;
   const TriangleRule rule = triangle_rule(4);
@@ -135,7 +135,7 @@ void volume_terms(const Mesh& mesh, double E, const VectorField& f, int l, Sink&
   }
 }
 
-// Interior edges: h_E / E ||[sigma_h n]||_E^2 (eta_2T), the jump constant on the edge, half
+// Interior edges: h_E / E ||[sigma_h n]||_E^2, the jump constant on the edge, half
 // to each neighbour. Traction sides: h_E / E ||g_N - sigma_h n||_E^2 (the Neumann residual).
 void edge_terms(const Mesh& mesh, const std::vector<MeshEdge>& edges, const std::vector<Eigen::Vector3d>& stress,
                 double E, const std::vector<std::pair<Side, VectorField>>& neumann, int l, Sink& sink) {

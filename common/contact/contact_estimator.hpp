@@ -7,7 +7,8 @@
 // problems on non-matching meshes", J. Sci. Comput. 33 (2007) 25-45 (dual multipliers, where
 // lambda_h is the Neumann datum of both bodies on Gamma_c). Wohlmuth's own estimator is of
 // equilibrated type (Arnold-Winther stresses, equilibrated fluxes); only its use of lambda_h as
-// each body's traction is taken over here.
+// each body's traction is taken over here. (Written from the papers' abstracts and the
+// residual estimator's usual form: the full texts were not at hand, so no equation numbers.)
 //
 // Per triangle T of body l (E_l its Young's modulus, h the diameter of T or the length of an
 // edge E, sigma_h = sigma(u_h) constant on T, n the outward normal of the body):
