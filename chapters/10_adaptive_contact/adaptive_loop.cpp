@@ -1,0 +1,186 @@
+#include "adaptive_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+
+#include "marking.hpp"
+#include "common/fem/bisection.hpp"
+#include "common/fem/errors.hpp"
+#include "common/linalg/memory_estimate.hpp"
+#include "common/timing/stopwatch.hpp"
+
+namespace chapter10 {
+
+namespace {
+
+void measure_meshes(StepRecord& r, const mortar::TwoBodies& bodies) {
+  r.h_min = std::numeric_limits<double>::infinity();
+  r.h_max = 0;
+  double area = 0;
+  for (int l = 0; l < 2; ++l) {
+    const mortar::Mesh& m = bodies.body(l).mesh;
+    r.triangles[l] = static_cast<int>(m.triangles.size());
+    for (int t = 0; t < r.triangles[l]; ++t) area += m.area(t);
+    for (const auto& t : m.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const double e = (m.nodes[t[k]] - m.nodes[t[(k + 1) % 3]]).norm();
+        r.h_min = std::min(r.h_min, e);
+        r.h_max = std::max(r.h_max, e);
+      }
+  }
+  r.h_mean = std::sqrt(area / (r.triangles[0] + r.triangles[1]));
+}
+
+// The error against the exact solution (not timed: a measurement, not part of the method).
+void measure_error(StepRecord& r, const Scene& scene, const ContactStep& s) {
+  const mortar::ExactContact* exact = scene.exact();
+  if (exact == nullptr) {
+    r.err_energy = r.rel_err_energy = r.effectivity = std::nan("");
+    return;
+  }
+  mortar::ErrorNorms norms;
+  for (int l = 0; l < 2; ++l)
+    norms += mortar::error_norms(s.bodies.body(l).mesh, s.bodies.body(l).material, s.bodies.part(s.u, l),
+                                 exact->exact(l));
+  r.err_energy = std::sqrt(norms.error.energy);
+  r.rel_err_energy = norms.relative_energy();
+  r.effectivity = r.estimator / r.err_energy;
+}
+
+// SOLVE and ESTIMATE on the meshes as they are: the record's solve and estimate columns.
+StepRecord solve_and_estimate(const Scene& scene, const mortar::Mesh& m1, const mortar::Mesh& m2,
+                              const LoopOptions& o, const NestedStart* start, std::unique_ptr<ContactStep>& solved,
+                              mortar::ContactEstimate& estimate) {
+  StepRecord r;
+  solved = std::make_unique<ContactStep>(solve_contact_step(scene, m1, m2, o.nonmortar, start));
+  const ContactStep& s = *solved;
+  r.solve_s = s.solve_s;
+  const mortar::Stopwatch clock;
+  estimate = mortar::estimate_contact_error(s.bodies, s.u, s.gamma, s.constraints, s.lambda, scene.estimator_data());
+  r.estimate_s = clock.seconds();
+  r.dofs = s.bodies.num_dofs();
+  r.newton_steps = s.newton_steps;
+  r.active_rows = s.active_rows;
+  r.estimator = estimate.total();
+  r.term2 = estimate.term2;
+  r.strain_energy = strain_energy(s);
+  r.rel_estimator = r.estimator / std::sqrt(2 * r.strain_energy);
+  r.total_force = mortar::total_contact_force(s.gamma, s.constraints, s.lambda);
+  measure_meshes(r, s.bodies);
+  measure_error(r, scene, s);
+  return r;
+}
+
+void print_step(const char* kind, const StepRecord& r) {
+  std::printf("%s %2d  dofs=%8d  err_energy=%.4e (%.3f%%)  estimator=%.4e  effectivity=%.3f  newton=%d  "
+              "time_s=%.3f\n",
+              kind, r.step, r.dofs, r.err_energy, 100 * r.rel_err_energy, r.estimator, r.effectivity,
+              r.newton_steps, r.time_s);
+  std::fflush(stdout);
+}
+
+// The memory of a solve of `dofs` unknowns must fit before it starts (status 2 otherwise).
+void check_memory(double dofs) {
+  const std::string shortfall =
+      mortar::memory_shortfall(dofs, mortar::bytes_per_dof_single_solve, mortar::machine_memory());
+  if (!shortfall.empty()) throw MemoryGuard("the next refinement is refused before its solve: " + shortfall);
+}
+
+// MARK over both bodies together; a body that is not to be refined gets no marks.
+std::array<std::vector<bool>, 2> mark(const mortar::ContactEstimate& e, const LoopOptions& o) {
+  std::vector<double> all;
+  for (int l = 0; l < 2; ++l)
+    for (double v : e.indicator2[l]) all.push_back(o.refine_body[l] ? v : 0.0);
+  const std::vector<bool> marked = doerfler_marking(all, o.theta);
+  std::array<std::vector<bool>, 2> split;
+  split[0].assign(marked.begin(), marked.begin() + e.indicator2[0].size());
+  split[1].assign(marked.begin() + e.indicator2[0].size(), marked.end());
+  return split;
+}
+
+}  // namespace
+
+LoopResult run_adaptive_loop(const Scene& scene, const LoopOptions& o) {
+  LoopResult result;
+  std::array<mortar::BisectionMesh, 2> meshes{mortar::BisectionMesh(scene.first_mesh(0)),
+                                              mortar::BisectionMesh(scene.first_mesh(1))};
+  std::optional<NestedStart> start;
+  double elapsed = 0;
+  for (int step = 0;; ++step) {
+    // SOLVE, ESTIMATE
+    mortar::ContactEstimate estimate;
+    StepRecord r = solve_and_estimate(scene, meshes[0].mesh(), meshes[1].mesh(), o,
+                                      start && o.nested ? &*start : nullptr, result.last, estimate);
+    r.step = step;
+    r.min_angle_deg = std::min(meshes[0].min_angle_degrees(), meshes[1].min_angle_degrees());
+    elapsed += r.solve_s + r.estimate_s;
+    if (std::find(o.snapshot_steps.begin(), o.snapshot_steps.end(), step) != o.snapshot_steps.end())
+      result.snapshots.push_back({step, {meshes[0].mesh(), meshes[1].mesh()}, estimate.indicator2});
+    result.last_eta2 = estimate.indicator2;
+    const bool last = r.rel_estimator <= o.target || step + 1 >= o.max_steps;
+    if (last) {
+      r.time_s = elapsed;
+      result.steps.push_back(r);
+      print_step("adaptive step", r);
+      result.stopped_because = r.rel_estimator <= o.target ? "the estimated error reached the target" : "the step limit";
+      break;
+    }
+    // MARK, REFINE, and the displacement carried to the new meshes
+    const mortar::Stopwatch clock;
+    const auto marked = mark(estimate, o);
+    r.marked = static_cast<int>(std::count(marked[0].begin(), marked[0].end(), true) +
+                                std::count(marked[1].begin(), marked[1].end(), true));
+    for (int l = 0; l < 2; ++l) meshes[l].refine(marked[l]);
+    Eigen::VectorXd u_next(meshes[0].mesh().num_dofs() + meshes[1].mesh().num_dofs());
+    const ContactStep& solved = *result.last;
+    u_next << meshes[0].prolong(solved.bodies.part(solved.u, 0), 2), meshes[1].prolong(solved.bodies.part(solved.u, 1), 2);
+    start = nested_start(solved, std::move(u_next));
+    r.refine_s = clock.seconds();
+    elapsed += r.refine_s;
+    r.time_s = elapsed;
+    result.steps.push_back(r);
+    print_step("adaptive step", r);
+    const double next_dofs = static_cast<double>(start->u.size());
+    if (next_dofs > o.max_dofs) {
+      result.stopped_because = "the next step would pass --max-dofs";
+      break;
+    }
+    check_memory(next_dofs);
+  }
+  return result;
+}
+
+LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double target) {
+  LoopResult result;
+  std::optional<NestedStart> start;
+  for (int level = 0;; ++level) {
+    const mortar::Mesh m1 = mortar::rectangle_mesh(scene.first_mesh(0, level));
+    const mortar::Mesh m2 = mortar::rectangle_mesh(scene.first_mesh(1, level));
+    mortar::ContactEstimate estimate;
+    StepRecord r = solve_and_estimate(scene, m1, m2, o, start && o.nested ? &*start : nullptr, result.last, estimate);
+    r.step = level;
+    r.min_angle_deg = 45;  // square cells, each cut along a diagonal
+    r.time_s = r.solve_s;  // the level alone: uniform refinement needs no coarser level
+    result.last_eta2 = estimate.indicator2;
+    result.steps.push_back(r);
+    print_step("uniform level", r);
+    start = nested_start(*result.last, {});
+    const double error = scene.exact() != nullptr ? r.rel_err_energy : r.rel_estimator;
+    if (error <= target) {
+      result.stopped_because = "the target error";
+      break;
+    }
+    const double next_dofs = 4.0 * r.dofs;
+    if (next_dofs > o.max_dofs) {
+      result.stopped_because = "the next level would pass --max-dofs";
+      break;
+    }
+    check_memory(next_dofs);
+  }
+  return result;
+}
+
+}  // namespace chapter10

@@ -1,0 +1,83 @@
+#include "options.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace chapter10 {
+
+using mortar::Range;
+
+namespace {
+void add_scene_options(mortar::OptionParser& parser, SceneOptions& s) {
+  parser.add_choice("scene", s.name, {"hertz-exact", "bilateral", "punch"},
+                    "hertz-exact (exact Hertz, zone half-width L sqrt(2)/29), bilateral (chapter 4's manufactured "
+                    "solution) or punch (body 1 a block L/4 wide pressed on body 2: singular corners)");
+  parser.add_int("n0", s.n0, "body-1 elements along its contact side on the first mesh (punch: 4 unless given)",
+                 Range::closed(2, 4096));
+  parser.add_double("h-ratio", s.h_ratio, "h2 / h1 on the first mesh (punch: 2 unless given)", Range::closed(0.1, 10));
+  parser.add_double("E1", s.E1, "Young's modulus of body 1 [Pa] (punch: 10 unless given)", Range::closed(1e-300, 1e300));
+  parser.add_double("nu1", s.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
+  parser.add_double("E2", s.E2, "Young's modulus of body 2 [Pa] (punch: 1 unless given)", Range::closed(1e-300, 1e300));
+  parser.add_double("nu2", s.nu2, "Poisson ratio of body 2 (punch: 0.3 unless given)", Range::open(-1, 0.5));
+  parser.add_double("L", s.L, "length of body 2's contact side [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("H1", s.H1, "height of body 1 [m] (not the punch: its block is L/4 tall)", Range::closed(1e-6, 1e6));
+  parser.add_double("H2", s.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  parser.add_double("R", s.R, "hertz-exact: radius of the gap (x - L/2)^2 / (2R) [m]", Range::positive());
+  parser.add_double("delta", s.delta, "punch: downward displacement of body 1's top [m]", Range::positive());
+}
+
+void add_loop_options(mortar::OptionParser& parser, Options& o) {
+  LoopOptions& l = o.loop;
+  parser.add_double("theta", l.theta, "Doerfler's share: mark the fewest triangles carrying theta of eta^2 "
+                    "(1: every triangle; 0: only the largest)", Range::closed(0, 1));
+  parser.add_double("target", l.target, "stop once the estimated relative energy error eta / ||u_h|| is below",
+                    Range::open(0, 1));
+  parser.add_int("max-steps", l.max_steps, "adaptive steps at most", Range::closed(1, 200));
+  parser.add_double("max-dofs", l.max_dofs, "stop before a step (or uniform level) with more unknowns",
+                    Range::closed(100, 1e9));
+  parser.add_double("uniform-target", o.uniform_target,
+                    "uniform refinement runs until this relative energy error (punch: estimated)", Range::open(0, 1));
+  parser.add_flag("no-uniform", o.no_uniform, "skip the uniform refinement beside the adaptive loop");
+  parser.add_choice("start", o.start, {"nested", "cold"},
+                    "each solve's first active set: from the previous step's solution, or none");
+  parser.add_choice("refine", o.refine, {"both", "body1", "body2"}, "which bodies the loop may refine");
+  parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, 1 or 2 (default: the softer)",
+                 Range::closed(1, 2));
+}
+}  // namespace
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
+  add_scene_options(parser, o.scene);
+  add_loop_options(parser, o);
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_flag("quick", o.quick, "small sizes for tests (target 0.05, uniform target 0.05; not with --target)");
+  parser.parse(argc, argv);
+  SceneOptions& s = o.scene;
+  if (s.name == "punch") {
+    if (!parser.given("n0")) s.n0 = 4;
+    if (!parser.given("h-ratio")) s.h_ratio = 2;
+    // a punch ten times stiffer than its base: the pressure at its corners like r^-0.44
+    if (!parser.given("E1")) s.E1 = 10;
+    if (!parser.given("E2")) s.E2 = 1;
+    if (!parser.given("nu2")) s.nu2 = 0.3;
+  }
+  if (o.quick) {
+    if (parser.given("target")) parser.fail("target", "--quick sets the target (0.05); give one or the other");
+    o.loop.target = 0.05;
+    if (!parser.given("uniform-target")) o.uniform_target = 0.05;
+  }
+  const double ratio = s.E1 / s.E2;
+  if (ratio > 1e10 || ratio < 1e-10)
+    parser.fail("E1", "E1 / E2 must lie within 1e-10 and 1e10 (the soft body's equations sink below round-off)");
+  // the softer body carries the multipliers (chapter 5's evidence: a stiff non-mortar side
+  // makes the pressure oscillate from node to node)
+  o.loop.nonmortar = o.nonmortar > 0 ? o.nonmortar - 1 : (s.E1 > s.E2 ? 1 : 0);
+  o.loop.nested = o.start == "nested";
+  o.loop.refine_body = {o.refine != "body2", o.refine != "body1"};
+  if (s.name != "hertz-exact" && parser.given("R")) parser.fail("R", "only the hertz-exact scene has a gap radius");
+  if (s.name != "punch" && parser.given("delta")) parser.fail("delta", "only the punch is driven by --delta");
+  mortar::prepare_output_folder(parser, o.out);
+}
+
+}  // namespace chapter10
