@@ -24,7 +24,7 @@ namespace chapter10 {
 struct LoopOptions {
   double theta = 0.5;           // Doerfler's share
   int max_steps = 40;
-  double target = 0.01;         // stop once the relative estimated error eta / ||u_h|| is below
+  double target = 0.025;        // stop once the relative estimated error eta / ||u_h|| is below
   double max_dofs = 4e6;        // stop before a step with more unknowns
   int nonmortar = 0;            // body index
   bool nested = true;           // start each solve from the previous step
