@@ -51,7 +51,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   add_loop_options(parser, o);
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
-  parser.add_flag("quick", o.quick, "small sizes for tests (target 0.05, uniform target 0.05; not with --target)");
+  parser.add_flag("quick", o.quick, "small sizes for tests (target and uniform target 0.1, at most 50000 unknowns; not with --target or --max-dofs)");
   parser.parse(argc, argv);
   SceneOptions& s = o.scene;
   if (s.name == "punch") {
@@ -63,9 +63,11 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
     if (!parser.given("nu2")) s.nu2 = 0.3;
   }
   if (o.quick) {
-    if (parser.given("target")) parser.fail("target", "--quick sets the target (0.05); give one or the other");
-    o.loop.target = 0.05;
-    if (!parser.given("uniform-target")) o.uniform_target = 0.05;
+    if (parser.given("target")) parser.fail("target", "--quick sets the target (0.1); give one or the other");
+    if (parser.given("max-dofs")) parser.fail("max-dofs", "--quick sets --max-dofs (50000); give one or the other");
+    o.loop.target = 0.1;
+    o.loop.max_dofs = 5e4;
+    if (!parser.given("uniform-target")) o.uniform_target = 0.1;
   }
   const double ratio = s.E1 / s.E2;
   if (ratio > 1e10 || ratio < 1e-10)
