@@ -38,7 +38,7 @@ void measure_meshes(StepRecord& r, const mortar::TwoBodies& bodies) {
 void measure_error(StepRecord& r, const Scene& scene, const ContactStep& s) {
   const mortar::ExactContact* exact = scene.exact();
   if (exact == nullptr) {
-    r.err_energy = r.rel_err_energy = r.effectivity = std::nan("");
+    r.err_energy = r.rel_err_energy = r.effectivity = r.rel_err_by_energy = std::nan("");
     return;
   }
   mortar::ErrorNorms norms;
@@ -47,6 +47,8 @@ void measure_error(StepRecord& r, const Scene& scene, const ContactStep& s) {
                                  exact->exact(l));
   r.err_energy = std::sqrt(norms.error.energy);
   r.rel_err_energy = norms.relative_energy();
+  const double W = 0.5 * norms.exact.energy;
+  r.rel_err_by_energy = std::sqrt(std::fabs(r.strain_energy - W) / W);
   r.effectivity = r.estimator / r.err_energy;
 }
 

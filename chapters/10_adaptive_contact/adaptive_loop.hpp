@@ -38,6 +38,9 @@ struct StepRecord {
   double min_angle_deg = 0, h_min = 0, h_max = 0;
   double h_mean = 0;  // (area / triangles)^(1/2) over both bodies: N^(-1/2) up to a constant
   double err_energy = 0, rel_err_energy = 0;  // against the exact solution (NaN without one)
+  // (|W_h - W| / W)^(1/2) with W = 1/2 ||u||^2 the exact strain energy: the punch's measure
+  // (study.hpp), checked where the exact error is known
+  double rel_err_by_energy = 0;
   double estimator = 0, rel_estimator = 0, effectivity = 0;
   std::array<double, mortar::estimator_terms> term2{};
   double solve_s = 0, estimate_s = 0, refine_s = 0;
