@@ -24,6 +24,8 @@ book_packages=(pandoc texlive-xetex texlive-latex-recommended texlive-fonts-reco
 petsc_packages=(libpetsc-real-dev)
 chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
           ch05_unilateral_uzawa ch06_dual_mortar ch07_quadratic_elements ch08_friction)
+# the chapters after chapter 9 (which needs PETSc and runs between them)
+later_chapters=(ch10_adaptive_contact)
 # OpenMPI refuses to start as root unless told that it is meant (CI and this script run as root);
 # its waiting ranks yield the core instead of polling it, which on two cores shared with other
 # work made a run of a second take minutes.
@@ -100,6 +102,7 @@ configure() {
 # Chapter 7 with pointwise matching: Theorem 4.1's h^{1/2} with P2, beside P1 (about 25 s).
 # Chapter 8's Cattaneo-Mindlin scene: normal load, then shear in ten steps, and the load paths
 # (about 90 s), and its manufactured scene under Tresca's law (about 40 s).
+# Chapter 10's punch (singular corners: adaptive against uniform rates) and its bilateral scene.
 extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
             "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
             "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"
@@ -108,7 +111,9 @@ extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, squa
             "ch05_unilateral_uzawa|hertz_exact|--scene hertz-exact|chapter 5, scene hertz-exact"
             "ch07_quadratic_elements|pointwise|--matching pointwise|chapter 7, pointwise matching"
             "ch08_friction|cattaneo|--scene cattaneo|chapter 8, Cattaneo-Mindlin"
-            "ch08_friction|tresca|--law tresca --no-compare|chapter 8, Tresca")
+            "ch08_friction|tresca|--law tresca --no-compare|chapter 8, Tresca"
+            "ch10_adaptive_contact|punch|--scene punch|chapter 10, the punch"
+            "ch10_adaptive_contact|bilateral|--scene bilateral|chapter 10, scene bilateral")
 
 # run_program PROGRAM RESULTS FIGURES [OPTIONS...]: the full output stays in RESULTS; the
 # figures (PNG, and PDF when the program writes them) go to FIGURES, the .vtu files do not.
@@ -131,7 +136,7 @@ run_course() {
   # exercise executables) costs what a separate tree without tests would, and the test
   # command then finds the library and the programs already built.
   step "configuring build/" configure build
-  step "building the programs" cmake --build build -j "$jobs" --target "${chapters[@]}"
+  step "building the programs" cmake --build build -j "$jobs" --target "${chapters[@]}" "${later_chapters[@]}"
   local program
   for program in "${chapters[@]}"; do
     run_chapter "$program"
@@ -142,6 +147,9 @@ run_course() {
   else
     echo "PETSc not found: chapter 9 is not built (apt-get install ${petsc_packages[*]})"
   fi
+  for program in "${later_chapters[@]}"; do
+    run_chapter "$program"
+  done
   echo "figures refreshed in figures/, full output in results/, logs in $logs/"
 }
 
@@ -168,7 +176,8 @@ run_chapter() {
       env_launcher "mpirun -n 2" run_program ch09_parallel_petsc results/ch09_parallel_petsc figures/ch09_parallel_petsc
     return 0
   fi
-  step "running chapter ${program:3:1} ($program)" run_program "$program" "results/$program" "figures/$program"
+  local number=${program:2:2}
+  step "running chapter ${number#0} ($program)" run_program "$program" "results/$program" "figures/$program"
   for run in "${extra_runs[@]}"; do
     IFS='|' read -r name_program name options label <<< "$run"
     [ "$name_program" = "$program" ] || continue
@@ -181,7 +190,7 @@ run_chapter() {
 # program (ch06_dual_mortar) or topic (dual_mortar).
 chapter_program() {
   local want=$1 program
-  for program in "${chapters[@]}" ch09_parallel_petsc; do
+  for program in "${chapters[@]}" ch09_parallel_petsc "${later_chapters[@]}"; do
     local number=${program:2:2}
     case "$want" in
       "$program" | "ch$number" | "$number" | "${number#0}" | "${program:5}") echo "$program"; return 0 ;;
@@ -254,7 +263,7 @@ case "${1:-}" in
   run)
     if [ $# -ge 2 ]; then
       program=$(chapter_program "$2") || {
-        echo "course.sh: no chapter '$2' (a number 1-9, ch06, ch06_dual_mortar or dual_mortar)" >&2
+        echo "course.sh: no chapter '$2' (a number 1-10, ch06, ch06_dual_mortar or dual_mortar)" >&2
         exit 2
       }
       # a chapter's logs of its own, so that running another chapter keeps them

@@ -43,7 +43,7 @@ book_figures() {
 notes() {
   echo README.md
   local lesson
-  for lesson in chapters/0[0-9]_*/README.md; do
+  for lesson in chapters/[0-9][0-9]_*/README.md; do
     echo "$lesson"
     if [ "$1" = complete ] && [ -f "$(dirname "$lesson")/EVIDENCE.md" ]; then
       echo "$(dirname "$lesson")/EVIDENCE.md"
@@ -54,7 +54,7 @@ notes() {
     [ -f "$page" ] || continue
     # the lessons' edition carries a page of docs/ only when a lesson links to it (the
     # bibliography, the extensions); the README's other links keep their text there
-    if [ "$1" = complete ] || grep -qF "docs/$(basename "$page")" chapters/0[0-9]_*/README.md; then
+    if [ "$1" = complete ] || grep -qF "docs/$(basename "$page")" chapters/[0-9][0-9]_*/README.md; then
       echo "$page"
     fi
   done

@@ -33,7 +33,7 @@ minutes() {
 }
 
 pages=("$source_dir/README.md")
-for lesson in "$source_dir"/chapters/0[0-9]_*/README.md; do
+for lesson in "$source_dir"/chapters/[0-9][0-9]_*/README.md; do
   pages+=("$lesson")
   evidence=$(dirname "$lesson")/EVIDENCE.md
   [ -f "$evidence" ] && pages+=("$evidence")
@@ -67,7 +67,7 @@ done
 
 # the roadmap: one row per chapter, the lesson's link first, then its evidence's, each with "N min"
 readme=$source_dir/README.md
-for lesson in "$source_dir"/chapters/0[0-9]_*/README.md; do
+for lesson in "$source_dir"/chapters/[0-9][0-9]_*/README.md; do
   dir=$(basename "$(dirname "$lesson")")
   evidence=$(dirname "$lesson")/EVIDENCE.md
   [ -f "$evidence" ] || { fail "chapters/$dir has no EVIDENCE.md"; continue; }

@@ -13,7 +13,7 @@
 set -u
 source_dir=${1:?usage: check_notes_order.sh SOURCE_DIR}
 failures=0
-for note in "$source_dir"/chapters/0[0-9]_*/README.md; do
+for note in "$source_dir"/chapters/[0-9][0-9]_*/README.md; do
   # the headings outside code blocks, each reduced to its kind
   kinds=$(awk '/^```/ {code = !code; next} !code && /^## / {print}' "$note" | sed -E \
     -e 's/^## The program.*/program/' -e 's/^## Output.*/output/' -e 's/^## Results.*/results/' \

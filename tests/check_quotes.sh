@@ -18,7 +18,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # One line of code as compared: its // comment cut off, all blank space removed.
 squeeze='{ sub(/\/\/.*/, ""); gsub(/[ \t\r]/, ""); print }'
-for note in "$source_dir"/chapters/0[0-9]_*/README.md "$source_dir"/chapters/0[0-9]_*/EVIDENCE.md; do
+for note in "$source_dir"/chapters/[0-9][0-9]_*/README.md "$source_dir"/chapters/[0-9][0-9]_*/EVIDENCE.md; do
   [ -f "$note" ] || continue
   # each block as "LINE<TAB>FILE" (FILE empty when the marker is missing)
   while IFS=$'\t' read -r line file; do

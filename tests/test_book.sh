@@ -41,7 +41,7 @@ if grep -q 'Could not convert TeX math' "$out.log"; then
   grep -A3 'Could not convert TeX math' "$out.log"
   fail "formulas left as TeX in the HTML"
 fi
-for note in "$source_dir"/chapters/0[0-9]_*/README.md "$source_dir"/chapters/0[0-9]_*/EVIDENCE.md; do
+for note in "$source_dir"/chapters/[0-9][0-9]_*/README.md "$source_dir"/chapters/[0-9][0-9]_*/EVIDENCE.md; do
   [ -f "$note" ] || continue
   # the title as text: up to its first formula, which the HTML sets as MathML
   title=$(sed -n '/^# /{s/^# //p;q}' "$note" | sed 's/ *\$.*//')
@@ -83,7 +83,7 @@ for edition in lessons complete; do
 done
 # ... or, after a list item, folded into the item's text: a heading in the notes needs a blank
 # line before it
-for note in "$source_dir"/README.md "$source_dir"/chapters/0[0-9]_*/*.md "$source_dir"/docs/*.md "$source_dir"/exercises/*README.md \
+for note in "$source_dir"/README.md "$source_dir"/chapters/[0-9][0-9]_*/*.md "$source_dir"/docs/*.md "$source_dir"/exercises/*README.md \
             "$source_dir"/exercises/[0-9][0-9]_*/README.md; do
   glued=$(awk '/^```/ {code = !code} !code && FNR > 1 && prev != "" && /^#+ / {print FILENAME ":" FNR ": " $0} {prev = $0}' "$note")
   [ -z "$glued" ] || { printf '%s\n' "$glued"; fail "a heading with no blank line before it"; }
