@@ -103,6 +103,26 @@ std::array<std::vector<bool>, 2> mark(const mortar::ContactEstimate& e, const Lo
   return split;
 }
 
+// A nodal field (2 values per node) of rectangle_mesh(coarse), without jitter, at the nodes of
+// another mesh of the same rectangle: the P1 interpolant, read in the cell and the triangle
+// (below or above the diagonal) each node falls in. The uniform levels are nested, so this is
+// the exact prolongation there, as BisectionMesh::prolong is on the adaptive meshes.
+Eigen::VectorXd interpolate_from_rectangle(const mortar::RectangleSpec& coarse, const Eigen::VectorXd& u,
+                                           const mortar::Mesh& fine) {
+  const double hx = (coarse.x1 - coarse.x0) / coarse.nx, hy = (coarse.y1 - coarse.y0) / coarse.ny;
+  const auto at = [&](int i, int j) { return u.segment<2>(2 * (j * (coarse.nx + 1) + i)); };
+  Eigen::VectorXd v(fine.num_dofs());
+  for (int a = 0; a < fine.num_nodes(); ++a) {
+    const double X = (fine.nodes[a].x() - coarse.x0) / hx, Y = (fine.nodes[a].y() - coarse.y0) / hy;
+    const int i = std::clamp(static_cast<int>(X), 0, coarse.nx - 1), j = std::clamp(static_cast<int>(Y), 0, coarse.ny - 1);
+    const double s = X - i, t = Y - j;
+    const Eigen::Vector2d u00 = at(i, j), u10 = at(i + 1, j), u11 = at(i + 1, j + 1), u01 = at(i, j + 1);
+    v.segment<2>(2 * a) = t <= s ? Eigen::Vector2d(u00 + s * (u10 - u00) + t * (u11 - u10))
+                                 : Eigen::Vector2d(u00 + s * (u11 - u01) + t * (u01 - u00));
+  }
+  return v;
+}
+
 }  // namespace
 
 LoopResult run_adaptive_loop(const Scene& scene, const LoopOptions& o) {
@@ -169,7 +189,17 @@ LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double t
     result.last_eta2 = estimate.indicator2;
     result.steps.push_back(r);
     print_step("uniform level", r);
-    start = nested_start(*result.last, {});
+    if (scene.first_mesh(0, level).jitter == 0 && scene.first_mesh(1, level).jitter == 0) {
+      const ContactStep& solved = *result.last;
+      const mortar::Mesh n1 = mortar::rectangle_mesh(scene.first_mesh(0, level + 1));
+      const mortar::Mesh n2 = mortar::rectangle_mesh(scene.first_mesh(1, level + 1));
+      Eigen::VectorXd u_next(n1.num_dofs() + n2.num_dofs());
+      u_next << interpolate_from_rectangle(scene.first_mesh(0, level), solved.bodies.part(solved.u, 0), n1),
+          interpolate_from_rectangle(scene.first_mesh(1, level), solved.bodies.part(solved.u, 1), n2);
+      start = nested_start(solved, std::move(u_next));
+    } else {
+      start = nested_start(*result.last, {});
+    }
     const double error = scene.exact() != nullptr ? r.rel_err_energy : r.rel_estimator;
     if (error <= target) {
       result.stopped_because = "the target error";
