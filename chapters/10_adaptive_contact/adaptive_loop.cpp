@@ -86,8 +86,11 @@ void print_step(const char* kind, const StepRecord& r) {
 
 // The memory of a solve of `dofs` unknowns must fit before it starts (status 2 otherwise).
 void check_memory(double dofs) {
+  char part[96];
+  std::snprintf(part, sizeof part, "the next solve (%.3g dofs)", dofs);
   const std::string shortfall =
-      mortar::memory_shortfall(dofs, mortar::bytes_per_dof_single_solve, mortar::machine_memory());
+      mortar::memory_shortfall({{part, dofs * mortar::bytes_per_dof_single_solve}}, mortar::machine_memory(),
+                               "raise --target or lower --max-dofs");
   if (!shortfall.empty()) throw MemoryGuard("the next refinement is refused before its solve: " + shortfall);
 }
 

@@ -29,7 +29,7 @@ struct LoopOptions {
   int nonmortar = 0;            // body index
   bool nested = true;           // start each solve from the previous step
   std::array<bool, 2> refine_body{true, true};  // false: that body keeps its first mesh
-  std::vector<int> snapshot_steps{0, 3, 6};
+  std::vector<int> snapshot_steps{0, 3, 6, 12};
 };
 
 struct StepRecord {
