@@ -6,11 +6,13 @@
 // and an accepted run (0) writes no NaN or inf into any CSV or JSON. Some lists point --out at
 // a user's own folder, a dangling symlink or a symlink loop: whatever the status, the user's
 // files and links are still there afterwards. Sizes stay small (a
-// coarsest mesh of 4 and 3 levels unless the list itself tries --n0 or --levels), so each
-// accepted run takes well under a second.
+// coarsest mesh of 4 and 3 levels unless the list itself tries --n0 or --levels; chapter 10,
+// which has no levels, 3 adaptive steps and at most 5000 unknowns unless the list tries
+// --max-steps or --max-dofs), so each accepted run takes well under a second.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +90,9 @@ const std::vector<std::string> modest_values = {"0.5", "1", "2", "3/2", "2/3", "
 // Sizes: small valid ones and clearly invalid ones only, so no accepted run is large.
 const std::vector<std::string> n0_values = {"2", "3", "4", "0", "-4", "2.5", "1e400", "nan", "abc", "", "1/0", "99999999999"};
 const std::vector<std::string> levels_values = {"3", "0", "-1", "2", "1000000", "nan", "3.5", "", "inf"};
+// Chapter 10's sizes: adaptive steps and the unknowns at which both of its runs stop.
+const std::vector<std::string> max_steps_values = {"3", "1", "2", "0", "-1", "201", "nan", "2.5", "", "inf"};
+const std::vector<std::string> max_dofs_values = {"5000", "100", "2000", "99", "0", "-1", "nan", "1e400", "abc", ""};
 // Young's moduli where the unit of E is tried to its limits.
 const std::vector<std::string> modulus_values = {"1e6", "1e-6", "1e300", "1e-300", "1e-160", "1e-150"};
 const std::vector<std::string> unknown_options = {"--bogus", "-n0", "--N0", "--n0=4", "---n0", "--", "-",
@@ -95,20 +100,28 @@ const std::vector<std::string> unknown_options = {"--bogus", "-n0", "--N0", "--n
 
 class ListMaker {
  public:
-  ListMaker(std::vector<OptionSpec> options, unsigned s) : options_(std::move(options)), rng_(s) {}
+  ListMaker(std::vector<OptionSpec> options, unsigned s) : options_(std::move(options)), rng_(s) {
+    has_levels_ = std::any_of(options_.begin(), options_.end(), [](const OptionSpec& o) { return o.name == "levels"; });
+  }
 
   // The folder comes first so that a later --out in the list (valid or not) is the one tried.
   std::vector<std::string> next(const std::string& out, const std::string& elsewhere,
                                 const std::vector<std::string>& users) {
-    std::vector<std::string> args = {"--no-plot", "--out", out, "--n0", "4", "--levels", "3"};
+    std::vector<std::string> args = {"--no-plot", "--out", out, "--n0", "4"};
+    if (has_levels_) {
+      args.insert(args.end(), {"--levels", "3"});
+    } else {
+      args.insert(args.end(), {"--max-steps", "3", "--max-dofs", "5000"});
+    }
+    const std::size_t base = args.size();
     const int changes = 1 + pick(4);
     for (int k = 0; k < changes; ++k) {
       const int kind = pick(10);
       if (kind == 0) {
         args.push_back(unknown_options[pick(unknown_options.size())]);
         if (pick(2) == 0) args.push_back(odd_values[pick(odd_values.size())]);
-      } else if (kind == 1 && args.size() > 7) {
-        const std::size_t i = 7 + pick(args.size() - 7);  // duplicate a generated argument
+      } else if (kind == 1 && args.size() > base) {
+        const std::size_t i = base + pick(args.size() - base);  // duplicate a generated argument
         args.push_back(args[i]);
         if (args[i].rfind("--", 0) == 0 && i + 1 < args.size()) args.push_back(args[i + 1]);
       } else {
@@ -138,6 +151,8 @@ class ListMaker {
     }
     if (o.name == "n0") return n0_values[pick(n0_values.size())];
     if (o.name == "levels") return levels_values[pick(levels_values.size())];
+    if (o.name == "max-steps") return max_steps_values[pick(max_steps_values.size())];
+    if (o.name == "max-dofs") return max_dofs_values[pick(max_dofs_values.size())];
     if (odd) return odd_values[pick(odd_values.size())];
     if (!o.choices.empty()) return o.choices[pick(o.choices.size())];
     if (o.name.size() == 2 && o.name[0] == 'E' && pick(2) == 0) return modulus_values[pick(modulus_values.size())];
@@ -147,6 +162,7 @@ class ListMaker {
 
   std::vector<OptionSpec> options_;
   std::mt19937 rng_;
+  bool has_levels_ = false;
 };
 
 std::string joined(const std::vector<std::string>& args) {
@@ -268,3 +284,4 @@ TEST(FuzzPrograms, ch05_command_lines_end_in_status_0_or_2) { fuzz(CH05); }
 TEST(FuzzPrograms, ch06_command_lines_end_in_status_0_or_2) { fuzz(CH06); }
 TEST(FuzzPrograms, ch07_command_lines_end_in_status_0_or_2) { fuzz(CH07); }
 TEST(FuzzPrograms, ch08_command_lines_end_in_status_0_or_2) { fuzz(CH08); }
+TEST(FuzzPrograms, ch10_command_lines_end_in_status_0_or_2) { fuzz(CH10); }
