@@ -21,7 +21,9 @@ std::vector<bool> doerfler_marking(const std::vector<double>& eta2, double theta
   for (std::size_t k = 0; k < order.size(); ++k) {
     const int t = order[k];
     // the largest is always marked; then stop at the share, or where the indicators are zero
-    if (k > 0 && (sum >= theta * total || eta2[t] <= 0)) break;
+    // (theta = 1 goes on to the last nonzero one: the sum in this order may fall short of the
+    // total by round-off)
+    if (k > 0 && ((theta < 1 && sum >= theta * total) || eta2[t] <= 0)) break;
     marked[t] = true;
     sum += eta2[t];
   }

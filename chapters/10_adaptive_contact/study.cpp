@@ -9,18 +9,32 @@
 
 namespace chapter10 {
 
-EnergyReference extrapolated_energy(const LoopResult& adaptive, int steps) {
-  const int n = static_cast<int>(adaptive.steps.size());
-  if (n < 3) throw std::runtime_error("the punch's reference needs at least 3 adaptive steps (lower --target)");
-  const int k0 = std::max(0, n - steps);
+EnergyReference split_off_reference(LoopResult& run, double target) {
+  const int n = static_cast<int>(run.steps.size());
+  int stop = n - 1;  // the last reported step: the first below the target
+  for (int k = 0; k < n; ++k)
+    if (run.steps[k].rel_estimator <= target) {
+      stop = k;
+      break;
+    }
+  int first = stop + 1;
+  if (n - first < 3) {
+    first = std::max(0, n - 4);
+    stop = first - 1;
+  }
+  if (stop < 2 || n - first < 3)
+    throw std::runtime_error("the punch's reference needs 3 reported steps and 3 more past --target; " +
+                             std::to_string(n) + " steps ran (raise --max-steps or --max-dofs)");
   std::vector<double> x, y;
-  for (int k = k0; k < n; ++k) {
-    x.push_back(1.0 / adaptive.steps[k].dofs);
-    y.push_back(adaptive.steps[k].strain_energy);
+  for (int k = first; k < n; ++k) {
+    x.push_back(1.0 / run.steps[k].dofs);
+    y.push_back(run.steps[k].strain_energy);
   }
   double c0, c1, cov00, cov01, cov11, sumsq;
   gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
-  return {c0, adaptive.steps.back().strain_energy, n - k0};
+  const EnergyReference ref{c0, run.steps.back().strain_energy, n - first, run.steps[first].dofs, run.steps.back().dofs};
+  run.steps.resize(stop + 1);
+  return ref;
 }
 
 void measure_against_reference(LoopResult& run, const EnergyReference& ref) {
@@ -40,6 +54,8 @@ mortar::ConvergenceTable step_table(const LoopResult& run) {
     mortar::Row row{{"step", r.step},
                      {"h", r.h_mean},
                      {"dofs", r.dofs},
+                     {"triangles_1", r.triangles[0]},
+                     {"triangles_2", r.triangles[1]},
                      {"h_min", r.h_min},
                      {"min_angle_deg", r.min_angle_deg},
                      {"marked", r.marked},
