@@ -184,10 +184,10 @@ chapter10::SceneOptions punch_options() {
   chapter10::SceneOptions s;  // as options.cpp sets them for --scene punch
   s.name = "punch";
   s.n0 = 4;
-  s.h_ratio = 2;
-  s.E1 = 10;
-  s.E2 = 1;
-  s.nu2 = 0.3;
+  s.bodies.h_ratio = 2;
+  s.bodies.E1 = 10;
+  s.bodies.E2 = 1;
+  s.bodies.nu2 = 0.3;
   return s;
 }
 
@@ -204,7 +204,7 @@ mortar::TwoBodies first_bodies(const chapter10::Scene& scene, int refinements = 
 // uniformly refined ones.
 TEST(OverlapDualInterface, punch_traces_end_at_the_corners_and_carry_a_constant) {
   const chapter10::Scene scene(punch_options());
-  const double L = scene.options().L;
+  const double L = scene.options().bodies.L;
   for (int refinements : {0, 1, 3})
     for (int nonmortar : {0, 1}) {
       const mortar::TwoBodies bodies = first_bodies(scene, refinements);

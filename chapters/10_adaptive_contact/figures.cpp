@@ -19,14 +19,14 @@ using mortar::Figure;
 using mortar::Series;
 
 std::string scene_label(const Options& o) {
-  if (o.scene.name == "punch") return "punch (E1/E2 = " + std::to_string(static_cast<int>(std::lround(o.scene.E1 / o.scene.E2))) + ")";
+  if (o.scene.name == "punch") return "punch (E1/E2 = " + std::to_string(static_cast<int>(std::lround(o.scene.bodies.E1 / o.scene.bodies.E2))) + ")";
   if (o.scene.name == "bilateral") return "bilateral manufactured scene";
   return "exact Hertz, a = L sqrt(2)/29";
 }
 
 // The window the zoom shows: the contact zone's edge (Hertz), the punch's left corner, or all.
 std::array<double, 4> zoom_window(const Options& o) {
-  const double L = o.scene.L;
+  const double L = o.scene.bodies.L;
   if (o.scene.name == "hertz-exact") {
     const double a = small_zone_half_width(L);
     return {L / 2 - 2.5 * a, L / 2 + 2.5 * a, -1.5 * a, 1.5 * a};
@@ -35,7 +35,7 @@ std::array<double, 4> zoom_window(const Options& o) {
     const double c = L / 2 - L / 8, d = L / 32;
     return {c - d, c + d, -d, d};
   }
-  return {0, L, -o.scene.H2, o.scene.H1};
+  return {0, L, -o.scene.bodies.H2, o.scene.bodies.H1};
 }
 
 Figure mesh_panel(const MeshSnapshot& s, const std::string& title, const std::array<double, 4>* window) {
@@ -143,7 +143,7 @@ void plot_rates(const Options& o, const LoopResult& a, const LoopResult* u, bool
   fig.slopes.push_back({-0.5, 0, 0.5, "N^{-1/2}", ""});
   if (u && o.scene.name == "punch") {
     const double lambda = wedge_on_half_plane_exponent(
-        dundurs_alpha(o.scene.E1, o.scene.nu1, o.scene.E2, o.scene.nu2), std::acos(-1.0) / 2);
+        dundurs_alpha(o.scene.bodies.E1, o.scene.bodies.nu1, o.scene.bodies.E2, o.scene.bodies.nu2), std::acos(-1.0) / 2);
     char label[64];
     std::snprintf(label, sizeof label, "N^{-%.3f} (corner theory)", lambda / 2);
     fig.slopes.push_back({-lambda / 2, 2, 1.6, label, ""});
@@ -214,15 +214,15 @@ void plot_edge_pressure(const Options& o, const LoopResult& a, const Scene& scen
     fig.series = {exact, nodes};
     mortar::write_figure(o.out, "edge_pressure", fig, run);
   } else if (o.scene.name == "punch") {
-    const double corner = o.scene.L / 2 - o.scene.L / 8;
+    const double corner = o.scene.bodies.L / 2 - o.scene.bodies.L / 8;
     const double lambda = wedge_on_half_plane_exponent(
-        dundurs_alpha(o.scene.E1, o.scene.nu1, o.scene.E2, o.scene.nu2), std::acos(-1.0) / 2);
+        dundurs_alpha(o.scene.bodies.E1, o.scene.bodies.nu1, o.scene.bodies.E2, o.scene.bodies.nu2), std::acos(-1.0) / 2);
     Figure fig = mortar::log_log_figure("Pressure near the punch's corner on the last adaptive mesh",
                                         "distance r to the corner [m]", "contact pressure [Pa]", "top right");
     Series nodes{"lambda_i at the non-mortar nodes (left half)", {}, {}, "points", "lc rgb '#1f4e9c' pt 7 ps 0.6"};
     for (std::size_t k = 0; k < p.x.size(); ++k) {
       const double r = p.x[k] - corner;
-      if (r > 0 && r <= o.scene.L / 8 && p.value[k] > 0) {
+      if (r > 0 && r <= o.scene.bodies.L / 8 && p.value[k] > 0) {
         nodes.x.push_back(r);
         nodes.y.push_back(p.value[k]);
       }

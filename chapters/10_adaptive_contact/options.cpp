@@ -16,14 +16,9 @@ void add_scene_options(mortar::OptionParser& parser, SceneOptions& s) {
                     "solution) or punch (body 1 a block L/4 wide pressed on body 2: singular corners)");
   parser.add_int("n0", s.n0, "body-1 elements along its contact side on the first mesh (punch: 4 unless given)",
                  Range::closed(2, 4096));
-  parser.add_double("h-ratio", s.h_ratio, "h2 / h1 on the first mesh (punch: 2 unless given)", Range::closed(0.1, 10));
-  parser.add_double("E1", s.E1, "Young's modulus of body 1 [Pa] (punch: 10 unless given)", Range::closed(1e-300, 1e300));
-  parser.add_double("nu1", s.nu1, "Poisson ratio of body 1", Range::open(-1, 0.5));
-  parser.add_double("E2", s.E2, "Young's modulus of body 2 [Pa] (punch: 1 unless given)", Range::closed(1e-300, 1e300));
-  parser.add_double("nu2", s.nu2, "Poisson ratio of body 2 (punch: 0.3 unless given)", Range::open(-1, 0.5));
-  parser.add_double("L", s.L, "length of body 2's contact side [m]", Range::closed(1e-6, 1e6));
-  parser.add_double("H1", s.H1, "height of body 1 [m] (not the punch: its block is L/4 tall)", Range::closed(1e-6, 1e6));
-  parser.add_double("H2", s.H2, "height of body 2 [m]", Range::closed(1e-6, 1e6));
+  // h-ratio, nonmortar, E1, nu1, E2, nu2, L, H1, H2 and jitter, as in chapters 3-9 (punch: h-ratio 2,
+  // E1 = 10, E2 = 1, nu2 = 0.3 unless given; the punch's block is L/4 wide and tall, whatever H1)
+  mortar::add_two_body_options(parser, s.bodies);
   parser.add_double("R", s.R, "hertz-exact: radius of the gap (x - L/2)^2 / (2R) [m]", Range::positive());
   parser.add_double("delta", s.delta, "punch: downward displacement of body 1's top [m]", Range::positive());
 }
@@ -43,8 +38,6 @@ void add_loop_options(mortar::OptionParser& parser, Options& o) {
   parser.add_choice("start", o.start, {"nested", "cold"},
                     "each solve's first active set: from the previous step's solution, or none");
   parser.add_choice("refine", o.refine, {"both", "body1", "body2"}, "which bodies the loop may refine");
-  parser.add_int("nonmortar", o.nonmortar, "the non-mortar body, 1 or 2 (default: the softer)",
-                 Range::closed(1, 2));
 }
 }  // namespace
 
@@ -58,11 +51,14 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   SceneOptions& s = o.scene;
   if (s.name == "punch") {
     if (!parser.given("n0")) s.n0 = 4;
-    if (!parser.given("h-ratio")) s.h_ratio = 2;
+    mortar::TwoBodyOptions& b = s.bodies;
+    if (!parser.given("h-ratio")) b.h_ratio = 2;
     // a punch ten times stiffer than its base: the pressure at its corners like r^-0.44
-    if (!parser.given("E1")) s.E1 = 10;
-    if (!parser.given("E2")) s.E2 = 1;
-    if (!parser.given("nu2")) s.nu2 = 0.3;
+    if (!parser.given("E1")) b.E1 = 10;
+    if (!parser.given("E2")) b.E2 = 1;
+    if (!parser.given("nu2")) b.nu2 = 0.3;
+    // jitter moves the nodes of body 2's contact side, where body 1's corners must find theirs
+    if (b.jitter > 0) parser.fail("jitter", "the punch's body 2 needs nodes under body 1's corners: no jitter");
   }
   if (o.quick) {
     if (parser.given("target")) parser.fail("target", "--quick sets the target (0.1); give one or the other");
@@ -73,13 +69,10 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   if (s.name == "punch" && o.loop.max_steps < 6)
     parser.fail("max-steps", "the punch needs at least 6 adaptive steps: 3 for its table and 3 more past --target, "
                              "from which its reference strain energy is extrapolated");
-  mortar::TwoBodyOptions stiffness;
-  stiffness.E1 = s.E1;
-  stiffness.E2 = s.E2;
-  mortar::check_stiffness_ratio(parser, stiffness);
+  mortar::check_stiffness_ratio(parser, s.bodies);
   // the softer body carries the multipliers (chapter 5's evidence: a stiff non-mortar side
   // makes the pressure oscillate from node to node)
-  o.loop.nonmortar = o.nonmortar > 0 ? o.nonmortar - 1 : (s.E1 > s.E2 ? 1 : 0);
+  o.loop.nonmortar = parser.given("nonmortar") ? s.bodies.nonmortar - 1 : (s.bodies.E1 > s.bodies.E2 ? 1 : 0);
   o.loop.nested = o.start == "nested";
   o.loop.refine_body = {o.refine != "body2", o.refine != "body1"};
   if (s.name != "hertz-exact" && parser.given("R")) parser.fail("R", "only the hertz-exact scene has a gap radius");

@@ -17,7 +17,6 @@ struct Options {
   std::string refine = "both";   // or "body1", "body2": the other body keeps its first mesh
   double uniform_target = 0.01;  // uniform refinement runs until this relative energy error
   bool no_uniform = false;
-  int nonmortar = 0;             // 1 or 2 as given; 0: the softer body
   std::string out = "results/ch10_adaptive_contact";
   bool no_plot = false, quick = false;
 };

@@ -14,15 +14,15 @@ double small_zone_half_width(double L) { return L * std::sqrt(2.0) / 29; }
 Scene::Scene(const SceneOptions& o) : o_(o) {
   const mortar::Material m1 = material(0), m2 = material(1);
   if (o.name == "hertz-exact")
-    exact_ = std::make_unique<mortar::HertzHalfPlanes>(m1, m2, o.L / 2, small_zone_half_width(o.L), o.R);
+    exact_ = std::make_unique<mortar::HertzHalfPlanes>(m1, m2, o.bodies.L / 2, small_zone_half_width(o.bodies.L), o.R);
   else if (o.name == "bilateral")
-    exact_ = std::make_unique<mortar::ManufacturedContact>(m1, m2, o.L);
+    exact_ = std::make_unique<mortar::ManufacturedContact>(m1, m2, o.bodies.L);
   else if (o.name != "punch")
     throw std::invalid_argument("unknown scene '" + o.name + "' (hertz-exact, bilateral or punch)");
 }
 
 mortar::Material Scene::material(int l) const {
-  return l == 0 ? mortar::Material(o_.E1, o_.nu1) : mortar::Material(o_.E2, o_.nu2);
+  return l == 0 ? mortar::Material(o_.bodies.E1, o_.bodies.nu1) : mortar::Material(o_.bodies.E2, o_.bodies.nu2);
 }
 
 namespace {
@@ -58,31 +58,33 @@ mortar::RectangleSpec Scene::first_mesh(int l, int refinements) const {
   if (o_.name == "punch") {
     // body 1 is w = L/4 wide and as tall; body 2's columns must hold nodes at L/2 -+ w/2,
     // where body 1's corners sit, so their number is a multiple of 8
-    const double w = o_.L / 4, h1 = w / n1;
+    const double w = o_.bodies.L / 4, h1 = w / n1;
     if (l == 0) {
-      s.x0 = o_.L / 2 - w / 2;
-      s.x1 = o_.L / 2 + w / 2;
+      s.x0 = o_.bodies.L / 2 - w / 2;
+      s.x1 = o_.bodies.L / 2 + w / 2;
       s.y1 = w;
       s.nx = s.ny = n1;
+      s.jitter = o_.bodies.jitter;
     } else {
-      s.x1 = o_.L;
-      s.y0 = -o_.H2;
+      s.x1 = o_.bodies.L;
+      s.y0 = -o_.bodies.H2;
       s.y1 = 0;
-      s.nx = 8 * cells(o_.L / 8, o_.h_ratio * h1);
-      s.ny = cells(o_.H2, o_.L / s.nx);
+      s.nx = 8 * cells(o_.bodies.L / 8, o_.bodies.h_ratio * h1);
+      s.ny = cells(o_.bodies.H2, o_.bodies.L / s.nx);
     }
     return s;
   }
-  s.x1 = o_.L;
+  s.x1 = o_.bodies.L;
+  s.jitter = o_.bodies.jitter;
   if (l == 0) {
-    s.y1 = o_.H1;
+    s.y1 = o_.bodies.H1;
     s.nx = n1;
-    s.ny = cells(o_.H1, o_.L / n1);
+    s.ny = cells(o_.bodies.H1, o_.bodies.L / n1);
   } else {
-    s.y0 = -o_.H2;
+    s.y0 = -o_.bodies.H2;
     s.y1 = 0;
-    s.nx = cells(o_.L, o_.h_ratio * o_.L / n1);
-    s.ny = cells(o_.H2, o_.L / s.nx);
+    s.nx = cells(o_.bodies.L, o_.bodies.h_ratio * o_.bodies.L / n1);
+    s.ny = cells(o_.bodies.H2, o_.bodies.L / s.nx);
   }
   return s;
 }
@@ -90,12 +92,12 @@ mortar::RectangleSpec Scene::first_mesh(int l, int refinements) const {
 mortar::SceneData Scene::data(const mortar::TwoBodies& bodies) const {
   if (o_.name == "hertz-exact") return mortar::manufactured_scene_all_sides(bodies, *exact_);
   if (o_.name == "bilateral") return mortar::manufactured_scene(bodies, *exact_);
-  return punch_supports(bodies, o_.L / 2, o_.delta);
+  return punch_supports(bodies, o_.bodies.L / 2, o_.delta);
 }
 
 double Scene::gap(double x) const {
   if (o_.name != "hertz-exact") return 0.0;
-  const double X = x - o_.L / 2;
+  const double X = x - o_.bodies.L / 2;
   return X * X / (2 * o_.R);
 }
 

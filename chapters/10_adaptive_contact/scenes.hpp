@@ -24,17 +24,22 @@
 #include "common/contact/contact_scenes.hpp"
 #include "common/contact/exact_contact.hpp"
 #include "common/fem/mesh.hpp"
+#include "common/study/bilateral_study.hpp"
 
 namespace chapter10 {
 
 struct SceneOptions {
   std::string name = "hertz-exact";
-  double L = 1, H1 = 0.5, H2 = 0.5;
-  double E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25;
+  // the course's two bodies (E1 = 1, nu1 = 0.3, E2 = 3, nu2 = 0.25, L = 1, H1 = H2 = 0.5), here
+  // with h2 / h1 = 4/3 on the first mesh; their nonmortar is ignored (LoopOptions says it)
+  mortar::TwoBodyOptions bodies = [] {
+    mortar::TwoBodyOptions b;
+    b.h_ratio = 4.0 / 3;
+    return b;
+  }();
   double R = 1;          // hertz-exact: the gap's radius, p0 = a E* / (2R)
   double delta = 0.01;   // punch: the downward displacement of body 1's top [m]
   int n0 = 10;           // body 1's elements along its contact side on the first mesh
-  double h_ratio = 4.0 / 3;  // h2 / h1 on the first mesh
 };
 
 // The hertz-exact scene's half-width, L sqrt(2) / 29: irrational, so no mesh node lies on an

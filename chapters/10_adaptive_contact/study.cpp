@@ -79,14 +79,15 @@ mortar::ConvergenceTable step_table(const LoopResult& run) {
   return table;
 }
 
-double rate_in_n(const LoopResult& run, const std::string& what, int steps) {
+double rate_in_n(const LoopResult& run, const std::string& what) {
   std::vector<double> n, e;
-  const int size = static_cast<int>(run.steps.size());
-  for (int k = std::max(0, size - steps); k < size; ++k) {
-    const StepRecord& r = run.steps[k];
-    n.push_back(r.dofs);
-    e.push_back(what == "estimator" ? r.estimator : r.err_energy);
-  }
+  if (run.steps.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const double smallest = run.steps.back().dofs / 16.0 * (1 - 1e-12);
+  for (const StepRecord& r : run.steps)
+    if (r.dofs >= smallest) {
+      n.push_back(r.dofs);
+      e.push_back(what == "estimator" ? r.estimator : r.err_energy);
+    }
   return -mortar::log_log_slope(n, e);
 }
 

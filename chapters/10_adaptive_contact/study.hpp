@@ -16,7 +16,7 @@ namespace chapter10 {
 // problem driven by prescribed displacements alone, W(u_h) - W(u) = 1/2 ||u - u_h||^2 up to the
 // consistency error of the mortar constraint (a product of two errors), so
 // ||u - u_h|| / ||u|| = (|W_h - W| / W)^(1/2). W comes from steps the reported ones do not
-// include: the loop runs on past --target (to a third of it, about 9 times the unknowns), and
+// include: the loop runs on past --target (to half of it, about 4 times the unknowns), and
 // W is extrapolated from those further steps alone, W_k = W + C / N_k (an optimal adaptive
 // sequence has ||u - u_h||^2 ~ 1/N). So the rate measured on the reported steps does not come
 // out of the fit that made the reference.
@@ -35,8 +35,10 @@ void measure_against_reference(LoopResult& run, const EnergyReference& ref);
 // (relative), estimator (relative, same norm), effectivity, each term's share, time_s.
 mortar::ConvergenceTable step_table(const LoopResult& run);
 
-// -d log(err) / d log(N) over the last `steps` rows (0.5 is the optimal rate of P1).
-double rate_in_n(const LoopResult& run, const std::string& what, int steps = 3);
+// -d log(err) / d log(N), least squares over the rows whose N is within a factor 16 of the
+// last one (the span of three uniform levels; adaptive steps are closer together, and a fit
+// over three of them moves by +-0.05 from step to step). 0.5 is the optimal rate of P1.
+double rate_in_n(const LoopResult& run, const std::string& what);
 
 // The wall time to the first step whose relative energy error is at most `error` (NaN when
 // none is); adaptive: every step up to it, uniform: that level alone.
