@@ -324,13 +324,13 @@ TEST(AdaptiveLoop, hertz_exact_effectivity_band_and_adaptive_rate) {
       lo = std::min(lo, r.effectivity);
       hi = std::max(hi, r.effectivity);
     }
-  const double rate = chapter10::rate_in_n(adaptive, "error", 3);
+  const double rate = chapter10::rate_in_n(adaptive, "error");
   for (const chapter10::LoopResult* run : {&adaptive, &uniform})
     for (const chapter10::StepRecord& r : run->steps)
       std::printf("%s %2d: %7d dofs, err %.4e, effectivity %.4f\n", run == &adaptive ? "adaptive" : "uniform", r.step,
                   r.dofs, r.rel_err_energy, r.effectivity);
   std::printf("effectivity from %.4f to %.4f; adaptive rate in N %.4f, uniform %.4f\n", lo, hi, rate,
-              chapter10::rate_in_n(uniform, "error", 3));
+              chapter10::rate_in_n(uniform, "error"));
   EXPECT_GE(lo, 0.9 * 2.7635);
   EXPECT_LE(hi, 1.1 * 3.7819);
   EXPECT_GE(rate, 0.45);
