@@ -146,7 +146,7 @@ void plot_rates(const Options& o, const LoopResult& a, const LoopResult* u, bool
         dundurs_alpha(o.scene.bodies.E1, o.scene.bodies.nu1, o.scene.bodies.E2, o.scene.bodies.nu2), std::acos(-1.0) / 2);
     char label[64];
     std::snprintf(label, sizeof label, "N^{-%.3f} (corner theory)", lambda / 2);
-    fig.slopes.push_back({-lambda / 2, 2, 1.6, label, ""});
+    fig.slopes.push_back({-lambda / 2, 2, 0.5, label, ""});
   }
   mortar::write_figure(o.out, "error_vs_dofs", fig, run);
 }
@@ -180,7 +180,7 @@ void plot_effectivity(const Options& o, const LoopResult& a, const LoopResult* u
   fig.xlabel = "unknowns N";
   fig.ylabel = "effectivity index";
   fig.log_x = true;
-  fig.key = "top right";
+  fig.key = "bottom right";
   fig.series.push_back(run_series(a, "effectivity", "adaptive", "lc rgb '#1f4e9c' pt 7 lw 2"));
   if (u) fig.series.push_back(run_series(*u, "effectivity", "uniform", "lc rgb '#b2182b' pt 5 lw 2"));
   fig.settings.push_back("set yrange [0:*]");
@@ -230,7 +230,8 @@ void plot_edge_pressure(const Options& o, const LoopResult& a, const Scene& scen
     fig.series.push_back(nodes);
     char label[64];
     std::snprintf(label, sizeof label, "r^{%.3f} (wedge theory)", lambda - 1);
-    fig.slopes.push_back({lambda - 1, 0, 1.5, label, ""});
+    // through the farthest node, raised by half: drawn above the points it is compared with
+    fig.slopes.push_back({lambda - 1, 0, -0.5, label, "", true});
     mortar::write_figure(o.out, "edge_pressure", fig, run);
   }
 }
