@@ -62,13 +62,13 @@ StepRecord solve_and_estimate(const Scene& scene, const mortar::Mesh& m1, const 
   r.solve_s = s.solve_s;
   const mortar::Stopwatch clock;
   estimate = mortar::estimate_contact_error(s.bodies, s.u, s.gamma, s.constraints, s.lambda, scene.estimator_data());
+  r.strain_energy = strain_energy(s);  // ||u_h||, which the stopping test divides by
   r.estimate_s = clock.seconds();
   r.dofs = s.bodies.num_dofs();
   r.newton_steps = s.newton_steps;
   r.active_rows = s.active_rows;
   r.estimator = estimate.total();
   r.term2 = estimate.term2;
-  r.strain_energy = strain_energy(s);
   r.rel_estimator = r.estimator / std::sqrt(2 * r.strain_energy);
   r.total_force = mortar::total_contact_force(s.gamma, s.constraints, s.lambda);
   measure_meshes(r, s.bodies);

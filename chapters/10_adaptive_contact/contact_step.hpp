@@ -47,7 +47,8 @@ ContactStep solve_contact_step(const Scene& scene, mortar::Mesh mesh1, mortar::M
 // The start the next step takes from this one; u_prolonged may be empty.
 NestedStart nested_start(const ContactStep& step, Eigen::VectorXd u_prolonged);
 
-// The strain energy 1/2 u.K u of both bodies (the punch's error measure, chapter notes).
+// The strain energy 1/2 u.K u of both bodies: the norm the loop's target is relative to, and the
+// punch's error measure (study.hpp).
 double strain_energy(const ContactStep& step);
 
 }  // namespace chapter10

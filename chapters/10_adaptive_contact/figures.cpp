@@ -65,7 +65,10 @@ void plot_meshes(const Options& o, const LoopResult& a, bool run) {
     const std::string counts = "body 1 (blue) " + std::to_string(s.mesh[0].triangles.size()) + " triangles, body 2 (red) " +
                                std::to_string(s.mesh[1].triangles.size());
     Figure fig = mesh_panel(s, "After " + std::to_string(s.step) + " adaptive steps, " + scene_label(o) + ": " + counts, nullptr);
-    fig.panels.push_back(mesh_panel(s, "zoom on the contact zone", &window));
+    // the bilateral scene has no zone to zoom on
+    if (o.scene.name != "bilateral")
+      fig.panels.push_back(mesh_panel(
+          s, o.scene.name == "punch" ? "zoom on body 1's left corner" : "zoom on the contact zone", &window));
     mortar::write_figure(o.out, "mesh_step_" + std::to_string(s.step), fig, run);
   }
 }

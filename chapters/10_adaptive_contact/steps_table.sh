@@ -47,8 +47,7 @@ for k in keys:
 def show(k, v):
     x = float(v)
     if k in ("step", "dofs", "newton_steps", "marked", "active_rows"): return f"{x:.0f}"
-    if k == "err_energy" or k == "estimator": return f"{100 * x:.3g} %"
-    if k.startswith("share_"): return f"{100 * x:.2g} %"
+    if k.startswith("err_energy") or k == "estimator" or k.startswith("share_"): return f"{100 * x:.3g} %"
     return f"{x:.3g}"
 print("| " + " | ".join(keys) + " |")
 print("|" + "---:|" * len(keys))
