@@ -183,28 +183,17 @@ LoopResult run_adaptive_loop(const Scene& scene, const LoopOptions& o) {
 LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double target) {
   LoopResult result;
   std::optional<NestedStart> start;
+  std::array<mortar::Mesh, 2> mesh{mortar::rectangle_mesh(scene.first_mesh(0)), mortar::rectangle_mesh(scene.first_mesh(1))};
   for (int level = 0;; ++level) {
-    const mortar::Mesh m1 = mortar::rectangle_mesh(scene.first_mesh(0, level));
-    const mortar::Mesh m2 = mortar::rectangle_mesh(scene.first_mesh(1, level));
     mortar::ContactEstimate estimate;
-    StepRecord r = solve_and_estimate(scene, m1, m2, o, start && o.nested ? &*start : nullptr, result.last, estimate);
+    StepRecord r =
+        solve_and_estimate(scene, mesh[0], mesh[1], o, start && o.nested ? &*start : nullptr, result.last, estimate);
     r.step = level;
-    r.min_angle_deg = 45;  // square cells, each cut along a diagonal
+    r.min_angle_deg = std::min(mortar::min_angle_degrees(mesh[0]), mortar::min_angle_degrees(mesh[1]));
     r.time_s = r.solve_s;  // the level alone: uniform refinement needs no coarser level
     result.last_eta2 = estimate.indicator2;
     result.steps.push_back(r);
     print_step("uniform level", r);
-    if (scene.first_mesh(0, level).jitter == 0 && scene.first_mesh(1, level).jitter == 0) {
-      const ContactStep& solved = *result.last;
-      const mortar::Mesh n1 = mortar::rectangle_mesh(scene.first_mesh(0, level + 1));
-      const mortar::Mesh n2 = mortar::rectangle_mesh(scene.first_mesh(1, level + 1));
-      Eigen::VectorXd u_next(n1.num_dofs() + n2.num_dofs());
-      u_next << interpolate_from_rectangle(scene.first_mesh(0, level), solved.bodies.part(solved.u, 0), n1),
-          interpolate_from_rectangle(scene.first_mesh(1, level), solved.bodies.part(solved.u, 1), n2);
-      start = nested_start(solved, std::move(u_next));
-    } else {
-      start = nested_start(*result.last, {});
-    }
     const double error = scene.exact() != nullptr ? r.rel_err_energy : r.rel_estimator;
     if (error <= target) {
       result.stopped_because = "the target error";
@@ -216,6 +205,19 @@ LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double t
       break;
     }
     check_memory(next_dofs);
+    // the next level, started from this one interpolated (without jitter: cells are found by
+    // their coordinates), or from its multipliers alone
+    const std::array<mortar::RectangleSpec, 2> coarse{scene.first_mesh(0, level), scene.first_mesh(1, level)};
+    mesh = {mortar::rectangle_mesh(scene.first_mesh(0, level + 1)), mortar::rectangle_mesh(scene.first_mesh(1, level + 1))};
+    const ContactStep& solved = *result.last;
+    if (coarse[0].jitter == 0 && coarse[1].jitter == 0) {
+      Eigen::VectorXd u_next(mesh[0].num_dofs() + mesh[1].num_dofs());
+      u_next << interpolate_from_rectangle(coarse[0], solved.bodies.part(solved.u, 0), mesh[0]),
+          interpolate_from_rectangle(coarse[1], solved.bodies.part(solved.u, 1), mesh[1]);
+      start = nested_start(solved, std::move(u_next));
+    } else {
+      start = nested_start(solved, {});
+    }
   }
   return result;
 }

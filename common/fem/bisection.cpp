@@ -235,17 +235,7 @@ Eigen::VectorXd BisectionMesh::prolong(const Eigen::VectorXd& field, int compone
   return out;
 }
 
-double BisectionMesh::min_angle_degrees() const {
-  double smallest = M_PI;
-  for (const auto& t : mesh_.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector2d p = mesh_.nodes[t[(k + 1) % 3]] - mesh_.nodes[t[k]];
-      const Eigen::Vector2d q = mesh_.nodes[t[(k + 2) % 3]] - mesh_.nodes[t[k]];
-      // atan2 of |cross| and dot: accurate for small angles too, unlike acos
-      smallest = std::min(smallest, std::atan2(std::fabs(p.x() * q.y() - p.y() * q.x()), p.dot(q)));
-    }
-  return smallest * 180 / M_PI;
-}
+double BisectionMesh::min_angle_degrees() const { return mortar::min_angle_degrees(mesh_); }
 
 int BisectionMesh::generation_max() const {
   return generation_.empty() ? 0 : *std::max_element(generation_.begin(), generation_.end());

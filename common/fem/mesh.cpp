@@ -24,6 +24,18 @@ double Mesh::area(int t) const {
   return 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
 }
 
+double min_angle_degrees(const Mesh& mesh) {
+  double smallest = M_PI;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d p = mesh.nodes[t[(k + 1) % 3]] - mesh.nodes[t[k]];
+      const Eigen::Vector2d q = mesh.nodes[t[(k + 2) % 3]] - mesh.nodes[t[k]];
+      // atan2 of |cross| and dot: accurate for small angles too, unlike acos
+      smallest = std::min(smallest, std::atan2(std::fabs(p.x() * q.y() - p.y() * q.x()), p.dot(q)));
+    }
+  return smallest * 180 / M_PI;
+}
+
 double Mesh::max_edge_length() const {
   double h = 0;
   for (const auto& t : triangles)

@@ -54,6 +54,10 @@ struct Mesh {
 
 Mesh rectangle_mesh(const RectangleSpec& spec);
 
+// The smallest interior angle of the mesh's triangles, in degrees (the shape regularity that
+// error estimates and local refinement depend on).
+double min_angle_degrees(const Mesh& mesh);
+
 // The cell rows [row0, row1) of rectangle_mesh(spec) (node rows row0 to row1), with the whole
 // mesh's coordinates, jitter included: band node k is the whole mesh's node k + row0 (nx + 1).
 // Its bottom and top sides are listed only where the band reaches the rectangle's, its left and
