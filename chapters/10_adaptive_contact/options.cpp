@@ -73,6 +73,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   // the softer body carries the multipliers (chapter 5's evidence: a stiff non-mortar side
   // makes the pressure oscillate from node to node)
   o.loop.nonmortar = parser.given("nonmortar") ? s.bodies.nonmortar - 1 : (s.bodies.E1 > s.bodies.E2 ? 1 : 0);
+  if (!parser.given("nonmortar") && o.loop.nonmortar == 1)
+    std::printf("note: body 1 is %.3g times stiffer than body 2: body 2, the softer, is the non-mortar side "
+                "(--nonmortar 1 to force body 1)\n", s.bodies.E1 / s.bodies.E2);
   o.loop.nested = o.start == "nested";
   o.loop.refine_body = {o.refine != "body2", o.refine != "body1"};
   if (s.name != "hertz-exact" && parser.given("R")) parser.fail("R", "only the hertz-exact scene has a gap radius");
