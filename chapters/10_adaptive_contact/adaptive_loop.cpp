@@ -18,7 +18,6 @@ namespace {
 
 void measure_meshes(StepRecord& r, const mortar::TwoBodies& bodies) {
   r.h_min = std::numeric_limits<double>::infinity();
-  r.h_max = 0;
   double area = 0;
   for (int l = 0; l < 2; ++l) {
     const mortar::Mesh& m = bodies.body(l).mesh;
@@ -28,7 +27,6 @@ void measure_meshes(StepRecord& r, const mortar::TwoBodies& bodies) {
       for (int k = 0; k < 3; ++k) {
         const double e = (m.nodes[t[k]] - m.nodes[t[(k + 1) % 3]]).norm();
         r.h_min = std::min(r.h_min, e);
-        r.h_max = std::max(r.h_max, e);
       }
   }
   r.h_mean = std::sqrt(area / (r.triangles[0] + r.triangles[1]));
@@ -146,7 +144,6 @@ LoopResult run_adaptive_loop(const Scene& scene, const LoopOptions& o) {
     elapsed += r.solve_s + r.estimate_s;
     if (std::find(o.snapshot_steps.begin(), o.snapshot_steps.end(), step) != o.snapshot_steps.end())
       result.snapshots.push_back({step, {meshes[0].mesh(), meshes[1].mesh()}, estimate.indicator2});
-    result.last_eta2 = estimate.indicator2;
     const bool last = r.rel_estimator <= o.target || step + 1 >= o.max_steps;
     if (last) {
       r.time_s = elapsed;
@@ -191,7 +188,6 @@ LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double t
     r.step = level;
     r.min_angle_deg = std::min(mortar::min_angle_degrees(mesh[0]), mortar::min_angle_degrees(mesh[1]));
     r.time_s = r.solve_s;  // the level alone: uniform refinement needs no coarser level
-    result.last_eta2 = estimate.indicator2;
     result.steps.push_back(r);
     print_step("uniform level", r);
     const double error = scene.exact() != nullptr ? r.rel_err_energy : r.rel_estimator;

@@ -35,7 +35,7 @@ struct LoopOptions {
 struct StepRecord {
   int step = 0, dofs = 0, marked = 0, newton_steps = 0, active_rows = 0;
   std::array<int, 2> triangles{};
-  double min_angle_deg = 0, h_min = 0, h_max = 0;
+  double min_angle_deg = 0, h_min = 0;
   double h_mean = 0;  // (area / triangles)^(1/2) over both bodies: N^(-1/2) up to a constant
   double err_energy = 0, rel_err_energy = 0;  // against the exact solution (NaN without one)
   // (|W_h - W| / W)^(1/2) with W = 1/2 ||u||^2 the exact strain energy: the punch's measure
@@ -59,7 +59,6 @@ struct LoopResult {
   std::vector<StepRecord> steps;
   std::vector<MeshSnapshot> snapshots;
   std::unique_ptr<ContactStep> last;          // the last solve, for its pressure and pictures
-  std::array<std::vector<double>, 2> last_eta2;
   std::string stopped_because;
 };
 
