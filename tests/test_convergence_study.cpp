@@ -95,3 +95,9 @@ TEST(ConvergenceStudy, json_writes_nan_as_null) {
   o.set("a", std::nan("")).set("b", "x\"y");
   EXPECT_EQ(o.dump(), "{\n  \"a\": null,\n  \"b\": \"x\\\"y\"\n}");
 }
+
+TEST(ConvergenceStudy, json_writes_lists_of_numbers) {
+  JsonObject o;
+  o.set("steps", std::vector<int>{7, 1, 2}).set("empty", std::vector<double>{}).set("k", std::vector<double>{1.5, std::nan("")});
+  EXPECT_EQ(o.dump(), "{\n  \"steps\": [7, 1, 2],\n  \"empty\": [],\n  \"k\": [1.5, null]\n}");
+}

@@ -3,12 +3,16 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
+
+// PetscObjectStateGet, a developer-level call: a matrix rebuilt in place keeps its id, not its state
+#include <petsc/private/petscimpl.h>
 
 #include "petsc_check.hpp"
 
 namespace chapter09 {
 
-CondensedSolver::CondensedSolver(Mat K, Mat T, double rtol) : K_(K), T_(T), rtol_(rtol) {
+CondensedSolver::CondensedSolver(Mat K, Mat T, double rtol, Mat built_on) : K_(K), T_(T), rtol_(rtol) {
   PetscInt local = 0, global = 0;
   check(MatGetLocalSize(K, &local, nullptr), "MatGetLocalSize");
   check(MatGetSize(K, &global, nullptr), "MatGetSize");
@@ -19,9 +23,10 @@ CondensedSolver::CondensedSolver(Mat K, Mat T, double rtol) : K_(K), T_(T), rtol
         "MatShellSetOperation");
   check(MatSetOption(shell_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
 
-  // the preconditioner of K: GAMG, then the command line's -pc_ options
+  // the preconditioner of K (or of the glued K): GAMG, then the command line's -pc_ options
   check(PCCreate(PETSC_COMM_WORLD, &inner_), "PCCreate");
-  check(PCSetOperators(inner_, K, K), "PCSetOperators");
+  if (built_on == nullptr) built_on = K;
+  check(PCSetOperators(inner_, built_on, built_on), "PCSetOperators");
   check(PCSetType(inner_, PCGAMG), "PCSetType");
   check(PCSetFromOptions(inner_), "PCSetFromOptions");
 
@@ -55,7 +60,50 @@ CondensedSolver::~CondensedSolver() {
 
 void CondensedSolver::set_up() {
   check(PCSetUp(inner_), "PCSetUp (the preconditioner of K)");
+  // K does not change within a level, so PETSc would not rebuild anyway (it compares K's state);
+  // this says so, whatever a later change to K's state: the Newton steps change T's fixed rows only
+  check(PCSetReusePreconditioner(inner_, PETSC_TRUE), "PCSetReusePreconditioner");
   check(KSPSetUp(ksp_), "KSPSetUp");
+  ++setups_;
+  built_ = fingerprint();
+}
+
+// Each object the preconditioner built, with its state: a rebuild replaces or rewrites them.
+CondensedSolver::Fingerprint CondensedSolver::fingerprint() const {
+  Fingerprint f;
+  const auto add = [&f](PetscObject o) {
+    PetscObjectId id = 0;
+    PetscObjectState state = 0;
+    check(PetscObjectGetId(o, &id), "PetscObjectGetId");
+    check(PetscObjectStateGet(o, &state), "PetscObjectStateGet");
+    f.emplace_back(id, state);
+  };
+  PetscBool multigrid = PETSC_FALSE, factor = PETSC_FALSE;
+  check(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(inner_), &multigrid, PCGAMG, PCMG, ""),
+        "PetscObjectTypeCompareAny");
+  check(PetscObjectTypeCompareAny(reinterpret_cast<PetscObject>(inner_), &factor, PCCHOLESKY, PCLU, PCICC, PCILU, ""),
+        "PetscObjectTypeCompareAny");
+  if (multigrid) {
+    PetscInt levels = 0;
+    check(PCMGGetLevels(inner_, &levels), "PCMGGetLevels");
+    for (PetscInt l = 0; l < levels; ++l) {
+      KSP smoother;
+      Mat A, P;
+      check(PCMGGetSmoother(inner_, l, &smoother), "PCMGGetSmoother");
+      check(KSPGetOperators(smoother, &A, &P), "KSPGetOperators");
+      add(reinterpret_cast<PetscObject>(P));
+      if (l > 0) {
+        Mat interpolation;
+        check(PCMGGetInterpolation(inner_, l, &interpolation), "PCMGGetInterpolation");
+        add(reinterpret_cast<PetscObject>(interpolation));
+      }
+    }
+  } else if (factor) {
+    Mat F;
+    check(PCFactorGetMatrix(inner_, &F), "PCFactorGetMatrix");
+    add(reinterpret_cast<PetscObject>(F));
+  }
+  return f;
 }
 
 int CondensedSolver::solve(Vec rhs, Vec v, double rtol, bool from_start) {
@@ -76,6 +124,10 @@ int CondensedSolver::solve(Vec rhs, Vec v, double rtol, bool from_start) {
   const PetscErrorCode solved = KSPSolve(ksp_, rhs, v);
   KSPConvergedDefaultDestroy(standard);
   check(solved, "KSPSolve");
+  if (Fingerprint now = fingerprint(); now != built_) {  // PETSc rebuilt the preconditioner
+    ++setups_;
+    built_ = std::move(now);
+  }
   KSPConvergedReason reason;
   check(KSPGetConvergedReason(ksp_, &reason), "KSPGetConvergedReason");
   PetscInt iterations = 0;

@@ -23,6 +23,7 @@
 #include <petscksp.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace chapter09 {
@@ -32,13 +33,20 @@ class CondensedSolver {
   // K: the stiffness with its near-null space attached (or any SPD matrix); T: u = T v + g, or
   // nullptr for T = I. `rtol` and the command line configure the solver as every solve of the
   // chapter is configured: CG outside, GAMG (or the command line's -pc_type) on K inside.
-  CondensedSolver(Mat K, Mat T, double rtol);
+  // `built_on`: the matrix M is built on, K by default, or K glued along an active set
+  // (glued_stiffness.hpp), which the projected preconditioner inverts far better.
+  CondensedSolver(Mat K, Mat T, double rtol, Mat built_on = nullptr);
   ~CondensedSolver();
   CondensedSolver(const CondensedSolver&) = delete;
   CondensedSolver& operator=(const CondensedSolver&) = delete;
 
-  // Builds the preconditioner of K (once: K does not change).
+  // Builds the preconditioner of K (once: K does not change), and tells PETSc to keep it.
   void set_up();
+  // How many times the preconditioner of K was built: the calls of set_up(), and any rebuild
+  // PETSc made on its own since, seen in the objects it built (for GAMG and PCMG the operators
+  // and interpolations of every level, for a factorization its factor; other types are not
+  // probed). Checked after every solve.
+  int setups() const { return setups_; }
   // The rows fixed at v = 0 from now on: this rank's active pivots.
   void fix(const std::vector<PetscInt>& owned_rows) { fixed_ = owned_rows; }
   // CG on A_step v = Pi rhs from the given v (both set to 0 on the fixed rows first), to
@@ -64,6 +72,8 @@ class CondensedSolver {
   void zero_fixed(Vec x) const;
   void copy_fixed(Vec from, Vec to) const;
   void apply_T(Vec x, Vec y, bool transpose, bool inverse);
+  using Fingerprint = std::vector<std::pair<PetscObjectId, PetscObjectState>>;
+  Fingerprint fingerprint() const;
 
   Mat K_, T_, shell_ = nullptr;
   KSP ksp_ = nullptr;
@@ -72,6 +82,8 @@ class CondensedSolver {
   std::vector<PetscInt> fixed_;
   PetscInt first_ = 0;
   double rtol_ = 0;
+  int setups_ = 0;
+  Fingerprint built_;  // the preconditioner's objects when last built
   // the solve's test in the force residual: ||rho|| <= rtol scale (converged())
   struct ForceTest {
     void* standard = nullptr;  // PETSc's default test, run first

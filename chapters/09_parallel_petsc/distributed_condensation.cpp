@@ -31,6 +31,7 @@ void condense(DistributedCondensation& c, const DistributedSystem& s, const Glob
   const auto& B = rows.B;
   const int m = static_cast<int>(B.rows());
   c.pivots = rows.pivots;
+  c.B = B;
   std::unordered_map<PetscInt, int> row_of;  // pivot dof -> its row
   for (int i = 0; i < m; ++i) row_of[c.pivots[i]] = i;
   const auto is_pivot = [&](PetscInt d) { return row_of.count(d) > 0; };

@@ -26,6 +26,8 @@
 namespace chapter09 {
 
 struct DistributedCondensation {
+  using RowsB = Eigen::SparseMatrix<double, Eigen::RowMajor, PetscInt>;
+  RowsB B;  // the rows of B, global columns (every rank)
   std::vector<PetscInt> pivots;  // s_i of each row i, global dofs (every rank has all)
   std::vector<double> b;         // b_i = B(i, s_i): w_i = b_i v_{s_i}
   Mat T = nullptr;

@@ -1,11 +1,13 @@
 #include "distributed_newton.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "common/timing/stopwatch.hpp"
 #include "condensed_solver.hpp"
+#include "glued_stiffness.hpp"
 #include "petsc_check.hpp"
 
 namespace chapter09 {
@@ -55,10 +57,20 @@ std::vector<PetscInt> owned_active(const DistributedCondensation& c, const std::
   return rows;
 }
 
+// v = T^{-1} (u - g) = 2 (u - g) - T (u - g) (distributed_condensation.hpp: T^{-1} = 2I - T).
+void start_from(Vec u, const DistributedCondensation& c, Vec v) {
+  Vec d;
+  check(VecDuplicate(u, &d), "VecDuplicate");
+  check(VecWAXPY(d, -1.0, c.g, u), "VecWAXPY");
+  check(MatMult(c.T, d, v), "MatMult (T)");
+  check(VecAXPBY(v, 2.0, -1.0, d), "VecAXPBY");
+  check(VecDestroy(&d), "VecDestroy");
+}
+
 }  // namespace
 
 void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
-                   const NewtonOptions& o) {
+                   const NewtonOptions& o, const NewtonStart* start) {
   const int m = static_cast<int>(c.pivots.size());
   PivotGather at_pivots(c.r, c.pivots);
   Vec diagonal, v, rhs, Av;
@@ -68,18 +80,31 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   const std::vector<double> c_i = at_pivots(diagonal);
   check(VecDestroy(&diagonal), "VecDestroy");
   for (Vec* x : {&v, &rhs, &Av}) check(VecDuplicate(c.r, x), "VecDuplicate");
-  check(VecSet(v, 0.0), "VecSet");
+  if (start != nullptr) start_from(start->u, c, v);
+  else check(VecSet(v, 0.0), "VecSet");
 
-  // GAMG (or the command line's preconditioner) on K, built once: K never changes
-  CondensedSolver solver(s.K, c.T, o.ksp_rtol);
+  // The first active set: none (cold), every pivot (bilateral), or chapter 6's rule on the start,
+  // lambda~_i + c_i w~_i > 0 with w~_i = b_i v_{s_i}
+  out.active.assign(static_cast<std::size_t>(m), o.bilateral);
+  if (start != nullptr && !o.bilateral) {
+    const std::vector<double> v_s = at_pivots(v);
+    for (int i = 0; i < m; ++i) out.active[i] = start->lambda[i] + c_i[i] / c.b[i] * v_s[i] > 0;
+  }
+  out.first_active = static_cast<int>(std::count(out.active.begin(), out.active.end(), true));
+
+  // GAMG (or the command line's preconditioner), built once per level: on K, or on K glued
+  // along the first active set (glued_stiffness.hpp), which the Newton steps keep
   const mortar::Stopwatch clock;
+  Mat glued = nullptr;
+  if (o.glue_weight > 0 && out.first_active > 0) glued = glued_stiffness(s, c, out.active, c_i, o.glue_weight);
+  auto made = std::make_unique<CondensedSolver>(s.K, c.T, o.ksp_rtol, glued);
+  CondensedSolver& solver = *made;
   solver.set_up();
   out.setup_s = clock.seconds();
   out.ksp_type = solver.ksp_type();
   out.pc_type = solver.pc_type();
   const double final_rtol = solver.final_rtol(), loose_rtol = std::max(o.loose_rtol, final_rtol);
 
-  out.active.assign(static_cast<std::size_t>(m), o.bilateral);
   bool tight = o.bilateral || loose_rtol <= final_rtol, repeat = false;
   for (int solve = 1; solve <= o.max_solves; ++solve) {
     // One Newton step: w_A = 0, one Krylov solve from the last v
@@ -123,11 +148,15 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
     repeat = same;
     out.active = next;
   }
+  out.pc_setups = solver.setups();
+  out.last_active = static_cast<int>(std::count(out.active.begin(), out.active.end(), true));
   // u = T v + g
   check(VecDuplicate(c.r, &out.u), "VecDuplicate");
   check(MatMult(c.T, v, out.u), "MatMult");
   check(VecAXPY(out.u, 1.0, c.g), "VecAXPY");
   for (Vec* x : {&v, &rhs, &Av}) check(VecDestroy(x), "VecDestroy");
+  made.reset();
+  if (glued != nullptr) MatDestroy(&glued);
 }
 
 }  // namespace chapter09

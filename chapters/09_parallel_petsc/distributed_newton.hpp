@@ -27,6 +27,16 @@ struct NewtonOptions {
   double loose_rtol = 1e-2;   // a solve while the set moves: rtol times its initial residual
   int max_solves = 50;
   bool bilateral = false;     // w = 0 at every node: one solve, lambda of either sign
+  // alpha of glued_stiffness.hpp: multigrid built on K glued along the first active set, when
+  // that set is not empty; 0: on K itself
+  double glue_weight = 3;
+};
+
+// A first guess (nested_start.hpp): u on this level's rows, and a multiplier for each row of B.
+// The first active set is chapter 6's rule evaluated on it: lambda_i + c_i w_i > 0.
+struct NewtonStart {
+  Vec u = nullptr;
+  std::vector<double> lambda;
 };
 
 struct NewtonResult {
@@ -36,12 +46,15 @@ struct NewtonResult {
   std::vector<bool> tight;          // per Krylov solve: to the final tolerance
   int steps = 0;                    // Newton steps: the active sets solved for, as in chapter 6
   double setup_s = 0;               // building the preconditioner of K (once)
+  int pc_setups = 0;                // times it was built (CondensedSolver::setups)
+  int first_active = 0, last_active = 0;  // |A| guessed first and found
   Vec u = nullptr;                  // u = T v + g, distributed
   std::string ksp_type, pc_type;    // what PETSc ran (after the command line's options)
   ~NewtonResult();
 };
 
+// From v = 0 and no node active (start = nullptr), or from the start.
 void solve_contact(NewtonResult& out, const DistributedSystem& s, const DistributedCondensation& c,
-                   const NewtonOptions& o);
+                   const NewtonOptions& o, const NewtonStart* start = nullptr);
 
 }  // namespace chapter09

@@ -12,7 +12,8 @@
 //   3. the contact line, whole on every rank from the cells along Gamma_c: chapter 6's dual
 //      basis, the rows of B and the weighted gap;
 //   4. the condensation A = T^T K T on the distributed matrix (distributed_condensation.cpp);
-//   5. the semismooth Newton method, one Krylov solve per step (distributed_newton.cpp);
+//   5. the semismooth Newton method, one Krylov solve per step (distributed_newton.cpp), from
+//      the level below's answer (nested_start.cpp);
 //   6. chapter 6's CHOLMOD answer on rank 0, and the differences (cholmod_reference.cpp);
 //   7. the table, summary.json and the figures, by rank 0 (figures.cpp).
 #include <petscksp.h>
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
@@ -37,9 +39,11 @@
 #include "common/timing/stopwatch.hpp"
 #include "distributed_condensation.hpp"
 #include "distributed_newton.hpp"
+#include "nested_start.hpp"
 #include "figures.hpp"
 #include "petsc_check.hpp"
 #include "petsc_options.hpp"
+#include "condensed_solver.hpp"
 
 namespace {
 
@@ -50,6 +54,8 @@ struct Options : mortar::TwoBodyOptions {
   double agreement = 1e-8;  // the largest relative difference to chapter 6's answer accepted
   std::string reference = "answer";  // answer | limit | none
   std::string scene = "hertz";       // hertz | manufactured
+  std::string start = "nested";      // nested | cold
+  double glue_weight = 3;
   bool quick = false, no_plot = false;
   std::string out = "results/ch09_parallel_petsc";
 };
@@ -121,6 +127,13 @@ void declare_options(mortar::OptionParser& parser, Options& o) {
                     mortar::Range::closed(1e-15, 1));
   parser.add_choice("scene", o.scene, {"hertz", "manufactured"},
                     "chapter 5's Hertz scene (unilateral), or chapter 4's manufactured solution (bilateral)");
+  parser.add_choice("start", o.start, {"nested", "cold"},
+                    "each level's Newton method starts from the level below's answer (displacement "
+                    "interpolated, multipliers along Gamma_c), or from u = 0 with no node in contact");
+  parser.add_double("glue-weight", o.glue_weight,
+                    "GAMG (or -pc_type) is built once per level on K glued along the first active set with this "
+                    "weight alpha (times K's diagonal); 0: on K itself",
+                    mortar::Range::closed(0, 1e6));
   parser.add_choice("reference", o.reference, {"answer", "limit", "none"},
                     "chapter 6's CHOLMOD answer and the physical limit on rank 0; the limit alone; or neither");
   parser.add_string("out", o.out, "output folder (written by rank 0)");
@@ -168,12 +181,14 @@ Eigen::VectorXd gather_on_rank_0(Vec u) {
 struct ContactLine {
   mortar::Constraints constraints;
   Eigen::VectorXd G;
+  std::vector<double> x;  // each row's node along Gamma_c
 };
 ContactLine contact_line(const mortar::TwoBodies& bodies, const mortar::SceneData& scene, const Options& o) {
   const mortar::ContactInterface gamma = mortar::make_dual_interface(bodies, o.nonmortar - 1);
   ContactLine line;
   line.constraints = mortar::constraint_rows(bodies, gamma, mortar::integral_matching_rows(gamma),
                                              scene.prescribed_mask(bodies.num_dofs()));
+  for (int node : line.constraints.row_node) line.x.push_back(gamma.nonmortar_trace.x[node]);
   const double L = o.L, R = o.R;
   line.G = o.scene == "hertz" ? mortar::tested_gap(gamma, line.constraints, [L, R](double x) {
     return (x - 0.5 * L) * (x - 0.5 * L) / (2 * R);
@@ -214,6 +229,25 @@ double timed(F&& f) {
   return slowest;
 }
 
+// One linear solve with the contact solve's preconditioner on K, to the same final tolerance:
+// assembly, set-up, and CG on K u = f from u = 0. The unit of k, the linear solves a contact
+// solve costs (the whole contact solve's time over this one's).
+double linear_solve_s(const chapter09::Ownership& rows, const chapter09::Part& part, const mortar::SceneData& scene,
+                      double rtol, int& iterations) {
+  chapter09::DistributedSystem system;
+  Vec u = nullptr;
+  const double seconds = timed([&] {
+    chapter09::assemble(system, rows, part, scene);
+    chapter09::CondensedSolver solver(system.K, nullptr, rtol);
+    solver.set_up();
+    chapter09::check(VecDuplicate(system.f, &u), "VecDuplicate");
+    chapter09::check(VecSet(u, 0.0), "VecSet");
+    iterations = solver.solve(system.f, u, rtol, false);
+  });
+  VecDestroy(&u);
+  return seconds;
+}
+
 int run(const Options& o, const mortar::OptionParser& parser) {
   const bool root = chapter09::rank() == 0;
   // the machine's CPU clock, to say at the end whether other work shared the cores
@@ -223,7 +257,9 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   double worst_difference = 0;
   bool all_identical = true;
   int ksp_max = 0, newton_last = 0;
-  double ratio_last = std::nan(""), limit_last = std::nan("");
+  double ratio_last = std::nan(""), limit_last = std::nan(""), cumulative_s = 0, k_last = std::nan("");
+  std::vector<int> steps_per_level, setups_per_level;
+  std::unique_ptr<chapter09::CoarseAnswer> coarse;  // the level below's answer (--start nested)
   std::string solver;
   const bool hertz = o.scene == "hertz";
   const mortar::Material material1(o.E1, o.nu1), material2(o.E2, o.nu2);
@@ -235,6 +271,10 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   };
   for (int level = 0; level < o.levels; ++level) {
     mortar::reset_peak_memory();
+    // one stage per level: -log_view then shows each level's set-up and solves apart
+    PetscLogStage stage;
+    chapter09::check(PetscLogStageRegister(("level " + std::to_string(level)).c_str(), &stage), "PetscLogStageRegister");
+    chapter09::check(PetscLogStagePush(stage), "PetscLogStagePush");
     // The level: who owns which cell rows, this rank's band of them, and the contact line on
     // every rank (steps 2 and 3).
     const mortar::TwoBodyGeometry geometry = mortar::two_body_geometry(o, o.n0 << level, 1.0);
@@ -244,35 +284,53 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     const ContactLine line = contact_line(strip.bodies, scene_of(strip.bodies), o);
     double h = 0;
 
-    // Steps 2, 4 and 5, timed together: the whole distributed contact solve. Its matrices are
-    // freed before chapter 6's answer starts: the two never hold memory at once.
+    // Steps 2, 4 and 5, timed together: the whole distributed contact solve, from the level
+    // below's answer when there is one. Its matrices are freed before the linear solve and
+    // chapter 6's answer start: no two of them hold memory at once.
     chapter09::NewtonResult newton;
     chapter09::NewtonOptions newton_options;
     newton_options.ksp_rtol = o.ksp_rtol;
     newton_options.loose_rtol = o.loose_rtol;
     newton_options.bilateral = !hertz;
-    double time_s = 0;
+    newton_options.glue_weight = o.glue_weight;
+    double time_s = 0, linear_s = 0, memory_mb = 0;
+    int linear_iterations = 0;
     {
       const chapter09::Part part = split.part(chapter09::rank(), material1, material2);
       const mortar::SceneData scene = scene_of(part.bodies);
       const double own_h = part.bodies.max_edge_length();
       MPI_Allreduce(&own_h, &h, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
-      chapter09::DistributedSystem system;
-      chapter09::DistributedCondensation condensed;
-      time_s = timed([&] {
-        chapter09::assemble(system, split.ownership(chapter09::rank()), part, scene);
-        chapter09::condense(condensed, system, chapter09::global_rows(strip, line.constraints, split.num_dofs()),
-                            line.G);
-        chapter09::solve_contact(newton, system, condensed, newton_options);
-      });
+      {
+        chapter09::DistributedSystem system;
+        chapter09::DistributedCondensation condensed;
+        chapter09::NewtonStart start;
+        time_s = timed([&] {
+          chapter09::assemble(system, split.ownership(chapter09::rank()), part, scene);
+          chapter09::condense(condensed, system, chapter09::global_rows(strip, line.constraints, split.num_dofs()),
+                              line.G);
+          if (coarse) {
+            chapter09::check(VecDuplicate(condensed.r, &start.u), "VecDuplicate");
+            chapter09::interpolate_displacement(*coarse, part, start.u);
+            start.lambda = chapter09::interpolate_multipliers(*coarse, line.x);
+          }
+          chapter09::solve_contact(newton, system, condensed, newton_options, coarse ? &start : nullptr);
+        });
+        if (start.u != nullptr) VecDestroy(&start.u);
+      }
+      // the resident-set peaks of all ranks, added: they share this machine's memory
+      const double peak = mortar::peak_memory_bytes() / 1e6;
+      MPI_Allreduce(&peak, &memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+      linear_s = linear_solve_s(split.ownership(chapter09::rank()), part, scene, o.ksp_rtol, linear_iterations);
     }
-    // the resident-set peaks of all ranks, added: they share this machine's memory
-    double memory_mb = 0, peak = mortar::peak_memory_bytes() / 1e6;
-    MPI_Allreduce(&peak, &memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    // the whole contact solve of this level: with a nested start, every level up to it
+    cumulative_s = (o.start == "nested" ? cumulative_s : 0.0) + time_s;
     const Eigen::VectorXd u = gather_on_rank_0(newton.u);
     const int ksp = *std::max_element(newton.ksp_iterations.begin(), newton.ksp_iterations.end());
     ksp_max = std::max(ksp_max, ksp);
     newton_last = newton.steps;
+    steps_per_level.push_back(newton.steps);
+    setups_per_level.push_back(newton.pc_setups);
+    k_last = cumulative_s / linear_s;
     solver = newton.ksp_type + " + " + newton.pc_type;
 
     const int dofs = static_cast<int>(split.num_dofs());
@@ -286,6 +344,13 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     row.push_back({"ksp_iterations_total", std::accumulate(newton.ksp_iterations.begin(), newton.ksp_iterations.end(), 0)});
     row.push_back({"memory_mb", memory_mb});
     row.push_back({"pc_setup_s", newton.setup_s});  // the preconditioner of K, built once
+    row.push_back({"pc_setups", newton.pc_setups});
+    row.push_back({"active_first", newton.first_active});
+    row.push_back({"active_last", newton.last_active});
+    row.push_back({"cumulative_s", cumulative_s});
+    row.push_back({"linear_s", linear_s});
+    row.push_back({"linear_iterations", linear_iterations});
+    row.push_back({"linear_solves", k_last});
     if (o.reference != "none") {
       // Step 6: the level's physical limit and, with --reference answer, chapter 6's answer
       // (rank 0), and how far the distributed one is from it.
@@ -320,7 +385,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       MPI_Bcast(&difference, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
       MPI_Bcast(&identical, 1, MPI_INT, 0, PETSC_COMM_WORLD);
       MPI_Bcast(&limit_s, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
-      ratio_last = time_s / limit_s;
+      ratio_last = cumulative_s / limit_s;
       limit_last = limit_s;
       row.push_back({"limit_s", limit_s});
       row.push_back({"cholmod_memory_mb", cholmod_mb});
@@ -340,8 +405,10 @@ int run(const Options& o, const mortar::OptionParser& parser) {
                   dofs, chapter09::ranks(), newton.steps);
       for (std::size_t k = 0; k < newton.ksp_iterations.size(); ++k)
         std::printf(" %d%s", newton.ksp_iterations[k], newton.tight[k] ? "" : "'");
-      std::printf(" (%s + %s), %.3g s, %.0f MB", newton.ksp_type.c_str(), newton.pc_type.c_str(), time_s,
-                  memory_mb);
+      std::printf(" (%s + %s), preconditioner built %d time%s, %.3g s (%.3g s with the levels below), %.0f MB; "
+                  "one linear solve %.3g s (%d iterations): %.2f linear solves",
+                  newton.ksp_type.c_str(), newton.pc_type.c_str(), newton.pc_setups, newton.pc_setups == 1 ? "" : "s",
+                  time_s, cumulative_s, memory_mb, linear_s, linear_iterations, k_last);
       if (o.reference == "limit") std::printf("; %.2f x the limit", ratio_last);
       if (o.reference == "answer")
         std::printf("; against chapter 6 (CHOLMOD): max relative difference %.2e, active set %s, %.2f x the limit",
@@ -350,6 +417,12 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       std::printf("\n");
     }
     if (o.reference == "answer") check_agreement(table, level, o.agreement);
+    if (o.start == "nested") {  // kept for the next level; the one below is freed
+      coarse.reset();
+      coarse = std::make_unique<chapter09::CoarseAnswer>(split, newton.u, line.x, newton.lambda);
+      newton.u = nullptr;
+    }
+    PetscLogStagePop();
   }
   // The timings above mean what they say only if no other work shared the cores (a loaded
   // machine once made PETSc look slower than CHOLMOD): the CPU time of other processes.
@@ -365,6 +438,9 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     results.set("ranks", chapter09::ranks())
         .set("dofs", table.column("dofs").back())
         .set("newton_steps", newton_last)
+        .set("newton_steps_per_level", steps_per_level)
+        .set("pc_setups_per_level", setups_per_level)
+        .set("linear_solves_per_contact_solve", k_last)
         .set("ksp_iterations_max", ksp_max);
     if (o.reference == "answer")
       results.set("max_rel_diff_vs_cholmod", worst_difference).set("active_set_identical", all_identical);

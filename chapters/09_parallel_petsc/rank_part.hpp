@@ -47,6 +47,13 @@ class RowSplit {
   RowSplit(const mortar::TwoBodyGeometry& g, int ranks);
   PetscInt num_dofs() const { return 2 * first_node(rows_[0] + rows_[1]); }
   int ranks() const { return static_cast<int>(first_row_.size()) - 1; }
+  const mortar::TwoBodyGeometry& geometry() const { return g_; }
+  // The global number of node (i, j) of body l (0 upper, 1 lower): column i, node row j from
+  // the body's bottom. Its dofs are 2 node and 2 node + 1.
+  PetscInt node(int l, int i, int j) const {
+    const PetscInt body1 = static_cast<PetscInt>(rows_[0] + 1) * (columns_[0] + 1);
+    return (l == 0 ? 0 : body1) + static_cast<PetscInt>(j) * (columns_[l] + 1) + i;
+  }
   Ownership ownership(int rank) const;
   // rank's cell rows of both bodies, or the two rows along Gamma_c
   Part part(int rank, const mortar::Material& body1, const mortar::Material& body2) const;

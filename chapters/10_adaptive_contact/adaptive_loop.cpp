@@ -112,16 +112,11 @@ std::array<std::vector<bool>, 2> mark(const mortar::ContactEstimate& e, const Lo
 // the exact prolongation there, as BisectionMesh::prolong is on the adaptive meshes.
 Eigen::VectorXd interpolate_from_rectangle(const mortar::RectangleSpec& coarse, const Eigen::VectorXd& u,
                                            const mortar::Mesh& fine) {
-  const double hx = (coarse.x1 - coarse.x0) / coarse.nx, hy = (coarse.y1 - coarse.y0) / coarse.ny;
-  const auto at = [&](int i, int j) { return u.segment<2>(2 * (j * (coarse.nx + 1) + i)); };
+  const auto at = [&](int i, int j) { return Eigen::Vector2d(u.segment<2>(2 * (j * (coarse.nx + 1) + i))); };
   Eigen::VectorXd v(fine.num_dofs());
   for (int a = 0; a < fine.num_nodes(); ++a) {
-    const double X = (fine.nodes[a].x() - coarse.x0) / hx, Y = (fine.nodes[a].y() - coarse.y0) / hy;
-    const int i = std::clamp(static_cast<int>(X), 0, coarse.nx - 1), j = std::clamp(static_cast<int>(Y), 0, coarse.ny - 1);
-    const double s = X - i, t = Y - j;
-    const Eigen::Vector2d u00 = at(i, j), u10 = at(i + 1, j), u11 = at(i + 1, j + 1), u01 = at(i, j + 1);
-    v.segment<2>(2 * a) = t <= s ? Eigen::Vector2d(u00 + s * (u10 - u00) + t * (u11 - u10))
-                                 : Eigen::Vector2d(u00 + s * (u11 - u01) + t * (u01 - u00));
+    const mortar::GridPoint p = mortar::locate_in_grid(coarse, fine.nodes[a]);
+    v.segment<2>(2 * a) = p.interpolate(at(p.i, p.j), at(p.i + 1, p.j), at(p.i + 1, p.j + 1), at(p.i, p.j + 1));
   }
   return v;
 }

@@ -204,4 +204,14 @@ Mesh displaced(const Mesh& mesh, const Eigen::VectorXd& u, double scale) {
   return out;
 }
 
+GridPoint locate_in_grid(const RectangleSpec& spec, const Eigen::Vector2d& p) {
+  const double X = (p.x() - spec.x0) / (spec.x1 - spec.x0) * spec.nx, Y = (p.y() - spec.y0) / (spec.y1 - spec.y0) * spec.ny;
+  GridPoint g;
+  g.i = std::clamp(static_cast<int>(std::floor(X)), 0, spec.nx - 1);
+  g.j = std::clamp(static_cast<int>(std::floor(Y)), 0, spec.ny - 1);
+  g.s = X - g.i;
+  g.t = Y - g.j;
+  return g;
+}
+
 }  // namespace mortar

@@ -54,6 +54,20 @@ struct Mesh {
 
 Mesh rectangle_mesh(const RectangleSpec& spec);
 
+// Where a point lies in the cell grid of rectangle_mesh(spec) without jitter or grading: cell
+// (i, j) (clamped to the grid) and the point's coordinates (s, t) in it, each in [0, 1] inside.
+struct GridPoint {
+  int i = 0, j = 0;
+  double s = 0, t = 0;
+  // The P1 interpolant of values at the cell's corners (i, j), (i+1, j), (i+1, j+1), (i, j+1):
+  // in the triangle below the (i,j)-(i+1,j+1) diagonal (t <= s) or the one above it.
+  template <class V>
+  V interpolate(const V& v00, const V& v10, const V& v11, const V& v01) const {
+    return t <= s ? V(v00 + s * (v10 - v00) + t * (v11 - v10)) : V(v00 + s * (v11 - v01) + t * (v01 - v00));
+  }
+};
+GridPoint locate_in_grid(const RectangleSpec& spec, const Eigen::Vector2d& p);
+
 // The smallest interior angle of the mesh's triangles, in degrees (the shape regularity that
 // error estimates and local refinement depend on).
 double min_angle_degrees(const Mesh& mesh);

@@ -53,6 +53,10 @@ JsonObject& JsonObject::set(const std::string& key, bool value) { return put(key
 JsonObject& JsonObject::set(const std::string& key, const JsonObject& value) {
   return put(key, std::make_shared<JsonObject>(value));
 }
+JsonObject& JsonObject::set(const std::string& key, const std::vector<double>& values) { return put(key, values); }
+JsonObject& JsonObject::set(const std::string& key, const std::vector<int>& values) {
+  return put(key, std::vector<double>(values.begin(), values.end()));
+}
 
 std::string JsonObject::dump(int indent) const {
   const std::string pad(indent + 2, ' ');
@@ -64,7 +68,11 @@ std::string JsonObject::dump(int indent) const {
     if (auto d = std::get_if<double>(&v)) s << number(*d);
     else if (auto t = std::get_if<std::string>(&v)) s << quoted(*t);
     else if (auto b = std::get_if<bool>(&v)) s << (*b ? "true" : "false");
-    else s << std::get<std::shared_ptr<JsonObject>>(v)->dump(indent + 2);
+    else if (auto list = std::get_if<std::vector<double>>(&v)) {
+      s << "[";
+      for (std::size_t k = 0; k < list->size(); ++k) s << (k ? ", " : "") << number((*list)[k]);
+      s << "]";
+    } else s << std::get<std::shared_ptr<JsonObject>>(v)->dump(indent + 2);
   }
   s << (entries_.empty() ? "}" : "\n" + std::string(indent, ' ') + "}");
   return s.str();

@@ -1,5 +1,5 @@
 // A minimal JSON object writer for summary.json: ordered keys, numbers, strings, booleans
-// and nested objects. Non-finite numbers are written as null (JSON has no NaN).
+// lists of numbers and nested objects. Non-finite numbers are written as null (JSON has no NaN).
 #pragma once
 
 #include <memory>
@@ -18,6 +18,9 @@ class JsonObject {
   JsonObject& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
   JsonObject& set(const std::string& key, bool value);
   JsonObject& set(const std::string& key, const JsonObject& value);
+  // A list of numbers, written on one line: [1, 2, 3]
+  JsonObject& set(const std::string& key, const std::vector<double>& values);
+  JsonObject& set(const std::string& key, const std::vector<int>& values);
 
   // Every key of other, in its order (replacing keys this object already has).
   JsonObject& merge(const JsonObject& other);
@@ -26,7 +29,7 @@ class JsonObject {
   bool empty() const { return entries_.empty(); }
 
  private:
-  using Value = std::variant<double, std::string, bool, std::shared_ptr<JsonObject>>;
+  using Value = std::variant<double, std::string, bool, std::shared_ptr<JsonObject>, std::vector<double>>;
   std::vector<std::pair<std::string, Value>> entries_;
   JsonObject& put(const std::string& key, Value v);
 };
