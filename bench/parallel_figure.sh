@@ -2,7 +2,8 @@
 # The figure of chapter 9's size table: time and memory per unknown against the unknowns, for
 # the distributed contact solve (CG + GAMG), the physical limit measured beside it (one CHOLMOD
 # factorization) and, if given, the same contact solve with MUMPS's Cholesky of K as the
-# preconditioner. It reads the folders bench/parallel.sh --keep writes (one per size).
+# preconditioner. It reads the folders bench/parallel.sh --keep writes (one per chain of levels,
+# each with shown.csv: the rows of the table).
 #
 #   bash bench/parallel_figure.sh OUT_DIR GAMG_RUNS [MUMPS_RUNS]
 #
@@ -15,10 +16,11 @@ mkdir -p "$out"
 
 # one line per size: unknowns, time, limit, memory per unknown, limit's memory per unknown
 collect() {
-  for csv in "$1"/*/convergence.csv; do
+  for csv in "$1"/*/shown.csv; do
     awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
       function v(n) { return (n in c) ? $(c[n]) : "NaN" }
-      { m = v("cholmod_memory_mb"); printf "%s %s %s %s %s\n", v("dofs"), v("time_s"), v("limit_s"),
+      { m = v("cholmod_memory_mb"); t = v("cumulative_s") == "NaN" ? v("time_s") : v("cumulative_s")
+        printf "%s %s %s %s %s\n", v("dofs"), t, v("limit_s"),
           1e6 * v("memory_mb") / v("dofs"), m == "NaN" ? "NaN" : 1e6 * m / v("dofs") }' "$csv"
   done | sort -g
 }

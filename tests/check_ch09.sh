@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Chapter 9 on RANKS ranks against chapter 6: the run ends with status 0, writes the output
 # contract's keys, and its answer equals chapter 6's CHOLMOD answer (displacements and
-# multipliers within 1e-8 relative, the same active set) whatever the number of ranks. Runs
-# --quick unless the options give --n0.
+# multipliers within 1e-8 relative, the same active set) whatever the number of ranks; the
+# preconditioner is built once per level, and a level started from the one below takes at most
+# 3 Newton steps. Runs --quick unless the options give --n0.
 #
 # With KSP_ITERATIONS_BAND="LOW HIGH" in the environment it also holds results.ksp_iterations_max,
 # the largest Krylov solve's iterations, within the band: the answer stays right with a poorer
@@ -27,9 +28,20 @@ value() { printf '%s\n' "$json" | sed -n "s/.*\"$1\": \([^,}]*\).*/\1/p" | head 
 [ "$(value active_set_identical)" = "true" ] || fail "the active set differs from chapter 6's"
 diff=$(value max_rel_diff_vs_cholmod)
 awk -v d="$diff" 'BEGIN { exit !(d != "" && d + 0 <= 1e-8) }' || fail "max_rel_diff_vs_cholmod = '$diff' > 1e-8"
-for key in ksp_iterations_max limit_ratio newton_steps; do
+for key in ksp_iterations_max limit_ratio newton_steps linear_solves_per_contact_solve; do
   [ -n "$(value $key)" ] || fail "results.$key missing"
 done
+# lists: "key": [a, b, ...]
+list() { printf '%s\n' "$json" | sed -n "s/.*\"$1\": \[\([^]]*\)\].*/\1/p" | tr -d ' ' | tr ',' ' '; }
+setups=$(list pc_setups_per_level) steps=$(list newton_steps_per_level)
+[ -n "$setups" ] && [ -n "$steps" ] || fail "results.pc_setups_per_level or newton_steps_per_level missing"
+for n in $setups; do [ "$n" = 1 ] || fail "the preconditioner was built $n times on one level (pc_setups_per_level: $setups)"; done
+# from the level below, a level's Newton method takes at most 3 steps (cold: as many as the set needs)
+case " $* " in *" --start cold "*) ;; *)
+  set -- $steps
+  shift
+  for n in "$@"; do [ "$n" -le 3 ] || fail "a nested level took $n Newton steps (newton_steps_per_level: $steps)"; done ;;
+esac
 grep -q '"nan\|inf' "$out"/*.csv "$out"/*.json && fail "NaN or inf written"
 if [ -n "${KSP_ITERATIONS_BAND:-}" ]; then
   read -r low high <<< "$KSP_ITERATIONS_BAND"

@@ -1,5 +1,7 @@
 #include "cholmod_reference.hpp"
 
+#include <algorithm>
+
 #include "common/contact/bilateral_contact.hpp"
 #include "common/contact/dual_condensation.hpp"
 #include "common/contact/saddle_point.hpp"
@@ -29,7 +31,11 @@ CholmodAnswer cholmod_answer(const mortar::TwoBodies& bodies, const mortar::Scen
 }
 
 double physical_limit(const mortar::TwoBodies& bodies, const mortar::SceneData& scene) {
-  return mortar::measure_physical_limit([&] { return mortar::two_body_limit_matrix(bodies, scene); });
+  // the better of two: one factorization of 6.8M unknowns took 94 s in one run and 164 s in
+  // another, and a slow one must not flatter the contact solve's ratio to it
+  const auto once = [&] { return mortar::measure_physical_limit([&] { return mortar::two_body_limit_matrix(bodies, scene); }); };
+  const double first = once();
+  return std::min(first, once());
 }
 
 }  // namespace chapter09

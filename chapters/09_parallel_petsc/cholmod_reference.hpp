@@ -22,7 +22,8 @@ struct CholmodAnswer {
   double limit_s = 0;  // the physical limit of the level
 };
 
-// The physical limit of the level alone (for sizes where chapter 6's answer takes too long).
+// The physical limit of the level alone (for sizes where chapter 6's answer takes too long), the
+// better of two measurements.
 double physical_limit(const mortar::TwoBodies& bodies, const mortar::SceneData& scene);
 
 // `unilateral`: contact (Hertz); otherwise bilateral, w = 0 at every node (manufactured).

@@ -229,6 +229,20 @@ double timed(F&& f) {
   return slowest;
 }
 
+// The finest level's multipliers along Gamma_c: each row's node x, lambda_i (a pressure) and
+// whether it is active.
+struct Multipliers {
+  std::vector<double> x, lambda;
+  std::vector<bool> active;
+};
+void write_multipliers(const std::string& path, const Multipliers& m) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) throw std::runtime_error("cannot write " + path);
+  std::fprintf(f, "x,lambda,active\n");
+  for (std::size_t i = 0; i < m.x.size(); ++i) std::fprintf(f, "%.17g,%.17g,%d\n", m.x[i], m.lambda[i], m.active[i] ? 1 : 0);
+  std::fclose(f);
+}
+
 // One linear solve with the contact solve's preconditioner on K, to the same final tolerance:
 // assembly, set-up, and CG on K u = f from u = 0. The unit of k, the linear solves a contact
 // solve costs (the whole contact solve's time over this one's).
@@ -260,6 +274,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   double ratio_last = std::nan(""), limit_last = std::nan(""), cumulative_s = 0, k_last = std::nan("");
   std::vector<int> steps_per_level, setups_per_level;
   std::unique_ptr<chapter09::CoarseAnswer> coarse;  // the level below's answer (--start nested)
+  Multipliers finest;  // the last level's, for multipliers.csv
   std::string solver;
   const bool hertz = o.scene == "hertz";
   const mortar::Material material1(o.E1, o.nu1), material2(o.E2, o.nu2);
@@ -417,6 +432,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       std::printf("\n");
     }
     if (o.reference == "answer") check_agreement(table, level, o.agreement);
+    finest = {line.x, newton.lambda, newton.active};
     if (o.start == "nested") {  // kept for the next level; the one below is freed
       coarse.reset();
       coarse = std::make_unique<chapter09::CoarseAnswer>(split, newton.u, line.x, newton.lambda);
@@ -446,6 +462,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
       results.set("max_rel_diff_vs_cholmod", worst_difference).set("active_set_identical", all_identical);
     if (o.reference != "none") results.set("limit_ratio", ratio_last).set("limit_s", limit_last);
     table.write_csv(o.out + "/convergence.csv");
+    write_multipliers(o.out + "/multipliers.csv", finest);
     chapter09::plot_solves(o.out, table, solver, o.ksp_rtol, !o.no_plot);
     mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
     std::printf("wrote %s\n", o.out.c_str());
