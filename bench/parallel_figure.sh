@@ -49,7 +49,7 @@ set key bottom right
 set xlabel 'unknowns'
 set ylabel 'wall time [s]'
 set title 'The whole contact solve against one factorization of K'
-plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'contact solve, CG + GAMG (2 ranks)', \\
+plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'whole contact solve, nested levels, CG + GAMG (2 ranks)', \\
      'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once'${mumps_time}, \\
      [1e5:2e7] 2e-6 * x title 'slope 1 (O(n))' dt 3 lc rgb 'black'
 unset logscale y

@@ -7,7 +7,7 @@
 #
 # With KSP_ITERATIONS_BAND="LOW HIGH" in the environment it also holds results.ksp_iterations_max,
 # the largest Krylov solve's iterations, within the band: the answer stays right with a poorer
-# preconditioner (GAMG's rigid-body modes built from wrong coordinates: 35 instead of 23-25 on
+# preconditioner (GAMG's rigid-body modes built from wrong coordinates: 33-34 instead of 21-27 on
 # the --quick levels at 1, 2 and 3 ranks), only the iterations show it.
 #
 #   check_ch09.sh MPIEXEC RANKS PROGRAM OUT_DIR [OPTION...]

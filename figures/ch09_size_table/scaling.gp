@@ -11,8 +11,8 @@ set key bottom right
 set xlabel 'unknowns'
 set ylabel 'wall time [s]'
 set title 'The whole contact solve against one factorization of K'
-plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'contact solve, CG + GAMG (2 ranks)', \
-     'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once', 'scaling.dat' index 1 using 1:2 with linespoints pt 6 lw 2 title 'contact solve, CG + MUMPS (K factored once)', \
+plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'whole contact solve, nested levels, CG + GAMG (2 ranks)', \
+     'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once', \
      [1e5:2e7] 2e-6 * x title 'slope 1 (O(n))' dt 3 lc rgb 'black'
 unset logscale y
 set yrange [0:3000]
@@ -20,7 +20,7 @@ set ylabel 'peak memory [bytes per unknown]'
 set title 'Peak resident memory per unknown'
 set key top right
 plot 'scaling.dat' index 0 using 1:4 with linespoints pt 7 lw 2 title 'contact solve, CG + GAMG (all ranks)', \
-     'scaling.dat' index 0 using 1:5 with linespoints pt 4 lw 2 dt 2 title 'CHOLMOD (rank 0, through the limit)', 'scaling.dat' index 1 using 1:4 with linespoints pt 6 lw 2 title 'contact solve, CG + MUMPS'
+     'scaling.dat' index 0 using 1:5 with linespoints pt 4 lw 2 dt 2 title 'CHOLMOD (rank 0, through the limit)'
 unset multiplot
 set terminal pdfcairo size 6.25,6.94 font 'sans,8'
 set output 'scaling.pdf'
@@ -34,8 +34,8 @@ set key bottom right
 set xlabel 'unknowns'
 set ylabel 'wall time [s]'
 set title 'The whole contact solve against one factorization of K'
-plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'contact solve, CG + GAMG (2 ranks)', \
-     'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once', 'scaling.dat' index 1 using 1:2 with linespoints pt 6 lw 2 title 'contact solve, CG + MUMPS (K factored once)', \
+plot 'scaling.dat' index 0 using 1:2 with linespoints pt 7 lw 2 title 'whole contact solve, nested levels, CG + GAMG (2 ranks)', \
+     'scaling.dat' index 0 using 1:3 with linespoints pt 4 lw 2 dt 2 title 'physical limit: assemble, factorize (CHOLMOD) and solve K once', \
      [1e5:2e7] 2e-6 * x title 'slope 1 (O(n))' dt 3 lc rgb 'black'
 unset logscale y
 set yrange [0:3000]
@@ -43,5 +43,5 @@ set ylabel 'peak memory [bytes per unknown]'
 set title 'Peak resident memory per unknown'
 set key top right
 plot 'scaling.dat' index 0 using 1:4 with linespoints pt 7 lw 2 title 'contact solve, CG + GAMG (all ranks)', \
-     'scaling.dat' index 0 using 1:5 with linespoints pt 4 lw 2 dt 2 title 'CHOLMOD (rank 0, through the limit)', 'scaling.dat' index 1 using 1:4 with linespoints pt 6 lw 2 title 'contact solve, CG + MUMPS'
+     'scaling.dat' index 0 using 1:5 with linespoints pt 4 lw 2 dt 2 title 'CHOLMOD (rank 0, through the limit)'
 unset multiplot
