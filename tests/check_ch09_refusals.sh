@@ -28,6 +28,9 @@ expect_refused() {
 expect_refused 2 "PETSc does not know or does not use -ksp_tipe" --quick -ksp_tipe cg
 expect_refused 1 "PETSc does not know or does not use -pc_gamg_treshold" --quick -pc_gamg_treshold 0.01
 expect_refused 2 "--bogus: unknown option" --quick --bogus
+expect_refused 1 "--start: expects one of nested|cold, got 'warm'" --quick --start warm
+expect_refused 1 "--glue-weight: must be in [0, 1000000], got -1" --quick --glue-weight -1
+expect_refused 1 "--glue-weight: expects a finite number, got 'nan'" --quick --glue-weight nan
 # PETSc's values, found by the trial solve and named
 expect_refused 2 "-pc_type bogus: PETSc refuses it" --quick -pc_type bogus
 expect_refused 2 "-ksp_type bogus: PETSc refuses it" --quick -ksp_type bogus
@@ -54,7 +57,7 @@ expect_refused 1 "--loose-rtol" --quick --loose-rtol 0.5
 expect_refused 1 "--reference" --quick --reference exact
 expect_refused 1 "--scene" --quick --scene signorini
 expect_refused 1 "--E1" --quick --E1 1e11
-expect_refused 1 "GB of memory, 77.6 GB of it for the distributed solve" --n0 1024 --levels 3
+expect_refused 1 "GB of memory, 84.9 GB of it for the distributed solve" --n0 1024 --levels 3
 # the distributed solve fits (15 GB), chapter 6's CHOLMOD on rank 0 would not (28 GB)
 expect_refused 1 "chapter 6's CHOLMOD answer or limit on rank 0" --n0 1800 --levels 1
 [ "$failures" -eq 0 ] || exit 1

@@ -7,7 +7,7 @@
 namespace chapter09 {
 
 namespace {
-// sum_{i in P} rho_i b_i b_i^T alone, on the rows of K: a few dense blocks along Gamma_c, each
+// sum_{i in P} kappa_i B_i^T B_i alone, on the rows of K: a few dense blocks along Gamma_c, each
 // added by the rank that owns its pivot. Preallocated empty: the few insertions reallocate a
 // matrix that holds nothing else, which is cheap.
 Mat glue(const DistributedSystem& s, const DistributedCondensation& c, const std::vector<bool>& active,
@@ -30,11 +30,11 @@ Mat glue(const DistributedSystem& s, const DistributedCondensation& c, const std
       columns.push_back(it.col());
       values.push_back(it.value());
     }
-    const double rho = alpha * K_ss[i] / (c.b[i] * c.b[i]);
+    const double kappa = alpha * K_ss[i] / (c.b[i] * c.b[i]);
     const std::size_t n = columns.size();
     block.resize(n * n);
     for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) block[a * n + b] = rho * values[a] * values[b];
+      for (std::size_t b = 0; b < n; ++b) block[a * n + b] = kappa * values[a] * values[b];
     const PetscInt size = static_cast<PetscInt>(n);
     check(MatSetValues(glue, size, columns.data(), size, columns.data(), block.data(), ADD_VALUES), "MatSetValues");
   }

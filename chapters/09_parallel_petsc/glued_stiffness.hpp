@@ -1,9 +1,9 @@
 // The matrix chapter 9's multigrid is built on, once per level: K glued along the first active
 // set P,
 //
-//     K_P = K + sum_{i in P} rho_i b_i b_i^T,     rho_i = alpha K_{s_i s_i} / b_i^2,
+//     K_P = K + sum_{i in P} kappa_i B_i^T B_i,     kappa_i = alpha K_{s_i s_i} / b_i^2,
 //
-// with b_i^T the row i of B (its entries b_i at the pivot s_i and -M at the mortar side's dofs).
+// with B_i the row i of B (its entries b_i at the pivot s_i and -M at the mortar side's dofs).
 //
 // Why not K itself, whose preconditioner maps to A's exactly (A^{-1} = T^{-1} K^{-1} T^{-T},
 // condensed_solver.hpp)? A Newton step fixes w_i = 0 on the active pivots, and that glues the two
