@@ -31,6 +31,8 @@ awk -v d="$diff" 'BEGIN { exit !(d != "" && d + 0 <= 1e-8) }' || fail "max_rel_d
 for key in ksp_iterations_max limit_ratio newton_steps linear_solves_per_contact_solve; do
   [ -n "$(value $key)" ] || fail "results.$key missing"
 done
+k=$(value linear_solves_per_contact_solve)
+awk -v k="$k" 'BEGIN { exit !(k + 0 > 0 && k != "null") }' || fail "results.linear_solves_per_contact_solve = '$k'"
 # lists: "key": [a, b, ...]
 list() { printf '%s\n' "$json" | sed -n "s/.*\"$1\": \[\([^]]*\)\].*/\1/p" | tr -d ' ' | tr ',' ' '; }
 setups=$(list pc_setups_per_level) steps=$(list newton_steps_per_level)

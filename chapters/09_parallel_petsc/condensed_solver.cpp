@@ -59,9 +59,9 @@ CondensedSolver::~CondensedSolver() {
 }
 
 void CondensedSolver::set_up() {
-  check(PCSetUp(inner_), "PCSetUp (the preconditioner of K)");
-  // K does not change within a level, so PETSc would not rebuild anyway (it compares K's state);
-  // this says so, whatever a later change to K's state: the Newton steps change T's fixed rows only
+  check(PCSetUp(inner_), "PCSetUp (the preconditioner of K or K_P)");
+  // Its matrix does not change within a level, so PETSc would not rebuild anyway (it compares the
+  // matrix's state); this says so, whatever a later change: the Newton steps change T's fixed rows only
   check(PCSetReusePreconditioner(inner_, PETSC_TRUE), "PCSetReusePreconditioner");
   check(KSPSetUp(ksp_), "KSPSetUp");
   ++setups_;

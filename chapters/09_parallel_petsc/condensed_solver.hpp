@@ -41,12 +41,14 @@ class CondensedSolver {
   CondensedSolver(const CondensedSolver&) = delete;
   CondensedSolver& operator=(const CondensedSolver&) = delete;
 
-  // Builds the preconditioner of K (once: K does not change), and tells PETSc to keep it.
+  // Builds the preconditioner (of K, or of `built_on`) once, and tells PETSc to keep it: the
+  // matrix it is built on does not change within a level.
   void set_up();
-  // How many times the preconditioner of K was built: the calls of set_up(), and any rebuild
-  // PETSc made on its own since, seen in the objects it built (for GAMG and PCMG the operators
-  // and interpolations of every level, for a factorization its factor; other types are not
-  // probed). Checked after every solve.
+  // How many times the preconditioner was built: the calls of set_up() (one per level, not one
+  // per Newton step), and any rebuild PETSc made on its own since, seen in the objects it built
+  // (for GAMG and PCMG the operators and interpolations of every level, for a factorization its
+  // factor; other types are not probed). With PETSc told to keep it, the second part stays 0
+  // unless that is undone. Checked after every solve.
   int setups() const { return setups_; }
   // The rows fixed at v = 0 from now on: this rank's active pivots.
   void fix(const std::vector<PetscInt>& owned_rows) { fixed_ = owned_rows; }
@@ -60,7 +62,7 @@ class CondensedSolver {
   void apply_A(Vec x, Vec y);
 
   std::string ksp_type() const;
-  std::string pc_type() const;  // of the preconditioner of K
+  std::string pc_type() const;  // of PETSc's preconditioner (inside the shell)
   double final_rtol() const { return rtol_; }
 
  private:

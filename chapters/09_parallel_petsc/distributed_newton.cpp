@@ -16,6 +16,10 @@ NewtonResult::~NewtonResult() {
   if (u != nullptr) VecDestroy(&u);
 }
 
+NewtonStart::~NewtonStart() {
+  if (u != nullptr) VecDestroy(&u);
+}
+
 namespace {
 // The values of x at the pivots, on every rank.
 class PivotGather {
@@ -97,8 +101,8 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   const mortar::Stopwatch clock;
   Mat glued = nullptr;
   if (o.glue_weight > 0 && out.first_active > 0) glued = glued_stiffness(s, c, out.active, c_i, o.glue_weight);
-  auto made = std::make_unique<CondensedSolver>(s.K, c.T, o.ksp_rtol, glued);
-  CondensedSolver& solver = *made;
+  CondensedSolver solver(s.K, c.T, o.ksp_rtol, glued);
+  if (glued != nullptr) check(MatDestroy(&glued), "MatDestroy");  // the solver's PC holds its own reference
   solver.set_up();
   out.setup_s = clock.seconds();
   out.ksp_type = solver.ksp_type();
@@ -155,8 +159,6 @@ void solve_contact(NewtonResult& out, const DistributedSystem& s, const Distribu
   check(MatMult(c.T, v, out.u), "MatMult");
   check(VecAXPY(out.u, 1.0, c.g), "VecAXPY");
   for (Vec* x : {&v, &rhs, &Av}) check(VecDestroy(x), "VecDestroy");
-  made.reset();
-  if (glued != nullptr) MatDestroy(&glued);
 }
 
 }  // namespace chapter09

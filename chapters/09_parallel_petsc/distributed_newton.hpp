@@ -37,6 +37,10 @@ struct NewtonOptions {
 struct NewtonStart {
   Vec u = nullptr;
   std::vector<double> lambda;
+  NewtonStart() = default;
+  NewtonStart(const NewtonStart&) = delete;
+  NewtonStart& operator=(const NewtonStart&) = delete;
+  ~NewtonStart();
 };
 
 struct NewtonResult {
@@ -45,7 +49,7 @@ struct NewtonResult {
   std::vector<int> ksp_iterations;  // per Krylov solve
   std::vector<bool> tight;          // per Krylov solve: to the final tolerance
   int steps = 0;                    // Newton steps: the active sets solved for, as in chapter 6
-  double setup_s = 0;               // building the preconditioner of K (once)
+  double setup_s = 0;               // building the preconditioner once: K_P (if glued) and GAMG
   int pc_setups = 0;                // times it was built (CondensedSolver::setups)
   int first_active = 0, last_active = 0;  // |A| guessed first and found
   Vec u = nullptr;                  // u = T v + g, distributed

@@ -249,17 +249,18 @@ void write_multipliers(const std::string& path, const Multipliers& m) {
 double linear_solve_s(const chapter09::Ownership& rows, const chapter09::Part& part, const mortar::SceneData& scene,
                       double rtol, int& iterations) {
   chapter09::DistributedSystem system;
-  Vec u = nullptr;
-  const double seconds = timed([&] {
+  struct Solution {  // freed whatever happens
+    Vec u = nullptr;
+    ~Solution() { if (u != nullptr) VecDestroy(&u); }
+  } x;
+  return timed([&] {
     chapter09::assemble(system, rows, part, scene);
     chapter09::CondensedSolver solver(system.K, nullptr, rtol);
     solver.set_up();
-    chapter09::check(VecDuplicate(system.f, &u), "VecDuplicate");
-    chapter09::check(VecSet(u, 0.0), "VecSet");
-    iterations = solver.solve(system.f, u, rtol, false);
+    chapter09::check(VecDuplicate(system.f, &x.u), "VecDuplicate");
+    chapter09::check(VecSet(x.u, 0.0), "VecSet");
+    iterations = solver.solve(system.f, x.u, rtol, false);
   });
-  VecDestroy(&u);
-  return seconds;
 }
 
 int run(const Options& o, const mortar::OptionParser& parser) {
@@ -330,7 +331,6 @@ int run(const Options& o, const mortar::OptionParser& parser) {
           }
           chapter09::solve_contact(newton, system, condensed, newton_options, coarse ? &start : nullptr);
         });
-        if (start.u != nullptr) VecDestroy(&start.u);
       }
       // the resident-set peaks of all ranks, added: they share this machine's memory
       const double peak = mortar::peak_memory_bytes() / 1e6;
@@ -358,7 +358,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
                        {"time_s", time_s}};
     row.push_back({"ksp_iterations_total", std::accumulate(newton.ksp_iterations.begin(), newton.ksp_iterations.end(), 0)});
     row.push_back({"memory_mb", memory_mb});
-    row.push_back({"pc_setup_s", newton.setup_s});  // the preconditioner of K, built once
+    row.push_back({"pc_setup_s", newton.setup_s});  // the preconditioner, K_P included, built once
     row.push_back({"pc_setups", newton.pc_setups});
     row.push_back({"active_first", newton.first_active});
     row.push_back({"active_last", newton.last_active});
