@@ -1,6 +1,6 @@
 #include "glued_stiffness.hpp"
 
-#include <algorithm>
+#include <unordered_set>
 
 #include "petsc_check.hpp"
 
@@ -17,6 +17,7 @@ Mat glue(const DistributedSystem& s, const DistributedCondensation& c, const std
                      nullptr, &glue),
         "MatCreateAIJ");
   check(MatSetOption(glue, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE), "MatSetOption");
+  const std::unordered_set<PetscInt> pivots(c.pivots.begin(), c.pivots.end());
   std::vector<PetscInt> columns;
   std::vector<double> values, block;
   for (std::size_t i = 0; i < active.size(); ++i) {
@@ -26,7 +27,7 @@ Mat glue(const DistributedSystem& s, const DistributedCondensation& c, const std
     columns.assign(1, c.pivots[i]);
     values.assign(1, c.b[i]);
     for (DistributedCondensation::RowsB::InnerIterator it(c.B, static_cast<PetscInt>(i)); it; ++it) {
-      if (std::find(c.pivots.begin(), c.pivots.end(), it.col()) != c.pivots.end()) continue;
+      if (pivots.count(it.col()) > 0) continue;
       columns.push_back(it.col());
       values.push_back(it.value());
     }

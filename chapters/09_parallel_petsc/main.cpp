@@ -50,12 +50,12 @@ namespace {
 struct Options : mortar::TwoBodyOptions {
   int n0 = 12, levels = 5;
   double delta = 0.02, R = 1;
-  double ksp_rtol = 1e-13, loose_rtol = 1e-2;
+  double ksp_rtol = chapter09::NewtonOptions{}.ksp_rtol, loose_rtol = chapter09::NewtonOptions{}.loose_rtol;
   double agreement = 1e-8;  // the largest relative difference to chapter 6's answer accepted
   std::string reference = "answer";  // answer | limit | none
   std::string scene = "hertz";       // hertz | manufactured
   std::string start = "nested";      // nested | cold
-  double glue_weight = 3;
+  double glue_weight = chapter09::NewtonOptions{}.glue_weight;
   bool quick = false, no_plot = false;
   std::string out = "results/ch09_parallel_petsc";
 };
@@ -271,7 +271,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
   mortar::ConvergenceTable table;
   double worst_difference = 0;
   bool all_identical = true;
-  int ksp_max = 0, newton_last = 0;
+  int ksp_max = 0;
   double ratio_last = std::nan(""), limit_last = std::nan(""), cumulative_s = 0, k_last = std::nan("");
   std::vector<int> steps_per_level, setups_per_level;
   std::unique_ptr<chapter09::CoarseAnswer> coarse;  // the level below's answer (--start nested)
@@ -342,7 +342,6 @@ int run(const Options& o, const mortar::OptionParser& parser) {
     const Eigen::VectorXd u = gather_on_rank_0(newton.u);
     const int ksp = *std::max_element(newton.ksp_iterations.begin(), newton.ksp_iterations.end());
     ksp_max = std::max(ksp_max, ksp);
-    newton_last = newton.steps;
     steps_per_level.push_back(newton.steps);
     setups_per_level.push_back(newton.pc_setups);
     k_last = cumulative_s / linear_s;
@@ -453,7 +452,7 @@ int run(const Options& o, const mortar::OptionParser& parser) {
         .set("timings_meaningful", load.meaningful());
     results.set("ranks", chapter09::ranks())
         .set("dofs", table.column("dofs").back())
-        .set("newton_steps", newton_last)
+        .set("newton_steps", steps_per_level.back())
         .set("newton_steps_per_level", steps_per_level)
         .set("pc_setups_per_level", setups_per_level)
         .set("linear_solves_per_contact_solve", k_last)
