@@ -106,21 +106,6 @@ std::array<std::vector<bool>, 2> mark(const mortar::ContactEstimate& e, const Lo
   return split;
 }
 
-// A nodal field (2 values per node) of rectangle_mesh(coarse), without jitter, at the nodes of
-// another mesh of the same rectangle: the P1 interpolant, read in the cell and the triangle
-// (below or above the diagonal) each node falls in. The uniform levels are nested, so this is
-// the exact prolongation there, as BisectionMesh::prolong is on the adaptive meshes.
-Eigen::VectorXd interpolate_from_rectangle(const mortar::RectangleSpec& coarse, const Eigen::VectorXd& u,
-                                           const mortar::Mesh& fine) {
-  const auto at = [&](int i, int j) { return Eigen::Vector2d(u.segment<2>(2 * (j * (coarse.nx + 1) + i))); };
-  Eigen::VectorXd v(fine.num_dofs());
-  for (int a = 0; a < fine.num_nodes(); ++a) {
-    const mortar::GridPoint p = mortar::locate_in_grid(coarse, fine.nodes[a]);
-    v.segment<2>(2 * a) = p.interpolate(at(p.i, p.j), at(p.i + 1, p.j), at(p.i + 1, p.j + 1), at(p.i, p.j + 1));
-  }
-  return v;
-}
-
 }  // namespace
 
 LoopResult run_adaptive_loop(const Scene& scene, const LoopOptions& o) {
@@ -203,8 +188,8 @@ LoopResult run_uniform_levels(const Scene& scene, const LoopOptions& o, double t
     const ContactStep& solved = *result.last;
     if (coarse[0].jitter == 0 && coarse[1].jitter == 0) {
       Eigen::VectorXd u_next(mesh[0].num_dofs() + mesh[1].num_dofs());
-      u_next << interpolate_from_rectangle(coarse[0], solved.bodies.part(solved.u, 0), mesh[0]),
-          interpolate_from_rectangle(coarse[1], solved.bodies.part(solved.u, 1), mesh[1]);
+      u_next << mortar::interpolate_from_rectangle(coarse[0], solved.bodies.part(solved.u, 0), mesh[0]),
+          mortar::interpolate_from_rectangle(coarse[1], solved.bodies.part(solved.u, 1), mesh[1]);
       start = nested_start(solved, std::move(u_next));
     } else {
       start = nested_start(solved, {});

@@ -214,4 +214,14 @@ GridPoint locate_in_grid(const RectangleSpec& spec, const Eigen::Vector2d& p) {
   return g;
 }
 
+Eigen::VectorXd interpolate_from_rectangle(const RectangleSpec& coarse, const Eigen::VectorXd& u, const Mesh& fine) {
+  const auto at = [&](int i, int j) { return Eigen::Vector2d(u.segment<2>(2 * (j * (coarse.nx + 1) + i))); };
+  Eigen::VectorXd v(fine.num_dofs());
+  for (int a = 0; a < fine.num_nodes(); ++a) {
+    const GridPoint p = locate_in_grid(coarse, fine.nodes[a]);
+    v.segment<2>(2 * a) = p.interpolate(at(p.i, p.j), at(p.i + 1, p.j), at(p.i + 1, p.j + 1), at(p.i, p.j + 1));
+  }
+  return v;
+}
+
 }  // namespace mortar

@@ -67,6 +67,11 @@ struct GridPoint {
   }
 };
 GridPoint locate_in_grid(const RectangleSpec& spec, const Eigen::Vector2d& p);
+// A nodal field (2 values per node) of rectangle_mesh(coarse), without jitter, at the nodes of
+// another mesh of the same rectangle: the P1 interpolant, read in the cell and the triangle
+// (below or above the diagonal) each node falls in. Uniform levels are nested, so this is the
+// exact prolongation there (chapter 10's uniform levels, chapter 11's nested start).
+Eigen::VectorXd interpolate_from_rectangle(const RectangleSpec& coarse, const Eigen::VectorXd& u, const Mesh& fine);
 
 // The smallest interior angle of the mesh's triangles, in degrees (the shape regularity that
 // error estimates and local refinement depend on).

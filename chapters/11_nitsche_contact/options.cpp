@@ -1,0 +1,62 @@
+#include "options.hpp"
+
+#include <cmath>
+
+#include "common/contact/nitsche_contact.hpp"
+#include "common/linalg/spd_solver.hpp"
+
+namespace chapter11 {
+
+void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv) {
+  using mortar::Range;
+  parser.add_choice("scene", o.scene, {"hertz-exact"}, "contact scene (chapter 5's exact Hertz solution)");
+  parser.add_double("theta", o.theta, "Nitsche's variant: 1 symmetric, 0, -1 skew-symmetric (any value in [-1, 1])",
+                    Range::closed(-1, 1));
+  parser.add_double("gamma0", o.gamma0, "Nitsche's parameter: gamma = gamma0 E / h", Range::closed(1e-8, 1e8));
+  parser.add_double("penalty-gamma0", o.penalty_gamma0,
+                    "penalty: gamma = gamma0 E / h, the fixed-gamma run keeping the coarsest level's value (default: --gamma0)",
+                    Range::closed(1e-8, 1e8));
+  parser.add_choice("traction", o.traction, {"body1", "body2", "mean", "harmonic"},
+                    "whose traction p(u) Nitsche reads: body 1, body 2, their mean, or weighted by h / E (the softer body's)");
+  parser.add_int("n0", o.n0, "body-1 elements along Gamma_c on the coarsest level", Range::closed(2, 1 << 14));
+  parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 10));
+  mortar::add_two_body_options(parser, o);
+  parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m] (sets p0 = a E* / (2R))", Range::closed(1e-6, 1e12));
+  parser.add_choice("start", o.start, {"nested", "cold"},
+                    "Newton's start for Nitsche and penalty: the level below's answer interpolated, or u = 0 inside");
+  parser.add_choice("sweep", o.sweep, {"none", "gamma0"},
+                    "gamma0: also errors and Newton steps for gamma0 = 1e-3 .. 1e3 and theta = 1, 0, -1 (gamma_sweep.csv)");
+  parser.add_int("sweep-level", o.sweep_level, "the level of the gamma0 sweep (0 = coarsest)", Range::closed(0, 9));
+  parser.add_string("out", o.out, "output folder");
+  parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
+  parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
+  parser.add_int("threads", o.threads, mortar::solver_threads_help, Range::closed(1, 64));
+  parser.parse(argc, argv);
+  mortar::set_solver_threads(o.threads);
+  if (!parser.given("penalty-gamma0")) o.penalty_gamma0 = o.gamma0;  // penalty is Nitsche without consistency
+  parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 3}});
+  if (o.sweep != "none" && o.sweep_level >= o.levels)
+    parser.fail("sweep-level", "level " + std::to_string(o.sweep_level) + " does not exist: levels run from 0 to " +
+                                   std::to_string(o.levels - 1));
+  mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
+  mortar::check_stiffness_ratio(parser, o);
+  // the finest level's dofs: the sparse solves are the memory (about 2 kB per dof with the
+  // mortar references' dense blocks on Gamma_c, far below the machine at 10 levels of n0 = 4)
+  const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
+  const double n2 = std::max(2.0, std::round(n1 / o.h_ratio));
+  const double dofs = 2 * (n1 + 1) * (std::round(n1 * o.H1 / o.L) + 1) + 2 * (n2 + 1) * (std::round(n2 * o.H2 / o.L) + 1);
+  if (dofs > 4e6) parser.fail("levels", "the finest level would have " + std::to_string(static_cast<long>(dofs)) +
+                                            " dofs, more than this chapter's 4e6 (lower --levels or --n0)");
+  mortar::prepare_output_folder(parser, o.out);
+  mortar::note_nearly_incompressible(o);
+}
+
+double body1_weight(const Options& o) {
+  if (o.traction == "body1") return 1;
+  if (o.traction == "body2") return 0;
+  if (o.traction == "mean") return 0.5;
+  const double h1 = o.L / o.n0, h2 = h1 * o.h_ratio;
+  return mortar::harmonic_body1_weight(o.E1, h1, o.E2, h2);
+}
+
+}  // namespace chapter11
