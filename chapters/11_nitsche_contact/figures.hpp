@@ -1,5 +1,5 @@
-// Chapter 11's figures: the energy error of every method against h on one plot, the pressure at
-// the contact edge on the finest level, and (with --sweep gamma0) the errors against gamma0.
+// Chapter 11's figures: the energy and pressure errors of every method against h, the pressure at
+// the contact edge on the finest level, and with a sweep the errors against gamma0 or E1 / E2.
 #pragma once
 
 #include <string>
@@ -12,6 +12,7 @@
 namespace chapter11 {
 
 void write_figures(const Options& o, const mortar::ConvergenceTable& table, const std::vector<Level>& levels,
-                   const Scene& scene, const std::vector<SweepPoint>& sweep, bool run_gnuplot);
+                   const Scene& scene, const std::vector<SweepPoint>& sweep,
+                   const std::vector<StiffnessPoint>& stiffness, bool run_gnuplot);
 
 }  // namespace chapter11

@@ -24,9 +24,9 @@ Level make_level(const Options& o, const Scene& scene, int index) {
   level.h1 = o.L / g.n1;
   level.h2 = o.L / g.n2;
   level.h = level.bodies.max_edge_length();
-  // from a / 2 inside the zone to a / 2 outside its right edge, 400 points
+  // from a / 2 inside the zone to a / 4 outside its right edge, 600 points
   const double a = scene.exact->half_width(), x0 = scene.exact->centre();
-  for (int k = 0; k <= 400; ++k) level.sample_x.push_back(x0 + 0.5 * a + k * a / 400);
+  for (int k = 0; k <= 600; ++k) level.sample_x.push_back(x0 + 0.5 * a + k * 0.75 * a / 600);
   return level;
 }
 

@@ -6,6 +6,7 @@
 //   ch11_nitsche_contact --theta -1 --gamma0 1e-3 # skew-symmetric: stable for any gamma0
 //   ch11_nitsche_contact --h-ratio 1/3            # the other mesh ratio
 //   ch11_nitsche_contact --sweep gamma0           # errors and Newton steps against gamma0
+//   ch11_nitsche_contact --sweep stiffness        # E1/E2 = 1e-6 .. 1e6, each body's traction
 #include <cstdio>
 #include <exception>
 
@@ -65,13 +66,18 @@ int main(int argc, char** argv) {
       sweep = chapter11::gamma_sweep(o, scene, levels[o.sweep_level]);
       chapter11::write_sweep(o.out + "/gamma_sweep.csv", sweep);
     }
+    std::vector<chapter11::StiffnessPoint> stiffness;
+    if (o.sweep == "stiffness") {
+      stiffness = chapter11::stiffness_sweep(o);
+      chapter11::write_stiffness_sweep(o.out + "/stiffness_sweep.csv", stiffness);
+    }
     mortar::write_summary(o.out + "/summary.json", parser, table.rates(), results);
     std::printf("finest level (%d dofs): physical limit %.3f s;", finest.bodies.num_dofs(), finest.limit_s);
     for (const chapter11::MethodResult& r : finest.methods)
       std::printf(" %s %.2f x", r.name.c_str(), r.time_s / finest.limit_s);
     std::printf("\n");
     // 5. Figures.
-    chapter11::write_figures(o, table, levels, scene, sweep, !o.no_plot);
+    chapter11::write_figures(o, table, levels, scene, sweep, stiffness, !o.no_plot);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ch11_nitsche_contact: error: %s\n", e.what());
     return 1;

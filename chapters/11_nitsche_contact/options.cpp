@@ -24,9 +24,10 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m] (sets p0 = a E* / (2R))", Range::closed(1e-6, 1e12));
   parser.add_choice("start", o.start, {"nested", "cold"},
                     "Newton's start for Nitsche and penalty: the level below's answer interpolated, or u = 0 inside");
-  parser.add_choice("sweep", o.sweep, {"none", "gamma0"},
-                    "gamma0: also errors and Newton steps for gamma0 = 1e-3 .. 1e3 and theta = 1, 0, -1 (gamma_sweep.csv)");
-  parser.add_int("sweep-level", o.sweep_level, "the level of the gamma0 sweep (0 = coarsest)", Range::closed(0, 9));
+  parser.add_choice("sweep", o.sweep, {"none", "gamma0", "stiffness"},
+                    "also, on --sweep-level: gamma0 = 1e-3 .. 1e3 for theta = 1, 0, -1 and penalty (gamma_sweep.csv), or "
+                    "E1/E2 = 1e-6 .. 1e6 with each body's traction (stiffness_sweep.csv)");
+  parser.add_int("sweep-level", o.sweep_level, "the level of the sweeps (0 = coarsest)", Range::closed(0, 9));
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
@@ -40,6 +41,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
                                    std::to_string(o.levels - 1));
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
   mortar::check_stiffness_ratio(parser, o);
+  mortar::choose_softer_nonmortar(parser, o);  // the mortar references' non-mortar side
   // the finest level's dofs: the sparse solves are the memory (about 2 kB per dof with the
   // mortar references' dense blocks on Gamma_c, far below the machine at 10 levels of n0 = 4)
   const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);

@@ -84,4 +84,41 @@ void write_sweep(const std::string& path, const std::vector<SweepPoint>& points)
   }
 }
 
+std::vector<StiffnessPoint> stiffness_sweep(const Options& o) {
+  std::vector<StiffnessPoint> points;
+  for (int k = -6; k <= 6; k += 2) {
+    Options variant = o;
+    variant.E1 = std::pow(10.0, k) * o.E2;
+    const int softer = variant.E1 < variant.E2 ? 1 : variant.E1 > variant.E2 ? 2 : o.nonmortar;
+    const Scene scene = make_scene(variant);
+    const Level level = make_level(variant, scene, o.sweep_level);
+    for (const std::string traction : {"body1", "body2", "harmonic", "mortar", "dual"}) {
+      StiffnessPoint p{variant.E1 / variant.E2, traction, {}};
+      if (traction == "mortar" || traction == "dual") {
+        p.result = run_mortar(level, scene, softer, traction == "dual");
+        p.traction = "-";
+        p.result.name = traction;
+      } else {
+        variant.traction = traction;
+        p.result = run_without_multipliers(level, scene, "nitsche", method_options(variant, "nitsche"));
+      }
+      std::printf("stiffness: E1/E2 %.0e  %-8s %-8s energy %.4e  pressure %.4e  steps %2d%s\n", p.ratio,
+                  p.result.name.c_str(), p.traction.c_str(), p.result.err_energy, p.result.err_pressure,
+                  p.result.newton_steps, p.result.converged ? "" : " (no convergence)");
+      points.push_back(std::move(p));
+    }
+  }
+  return points;
+}
+
+void write_stiffness_sweep(const std::string& path, const std::vector<StiffnessPoint>& points) {
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error("cannot write " + path);
+  f << "E1_over_E2,method,traction,err_energy,err_l2,err_pressure,half_width_error_m,newton_steps,converged\n";
+  for (const StiffnessPoint& p : points)
+    f << p.ratio << "," << p.result.name << "," << p.traction << "," << p.result.err_energy << "," << p.result.err_l2
+      << "," << p.result.err_pressure << "," << p.result.half_width_error_m << "," << p.result.newton_steps << ","
+      << (p.result.converged ? 1 : 0) << "\n";
+}
+
 }  // namespace chapter11

@@ -30,4 +30,16 @@ struct SweepPoint {
 std::vector<SweepPoint> gamma_sweep(const Options& o, const Scene& scene, const Level& level);
 void write_sweep(const std::string& path, const std::vector<SweepPoint>& points);
 
+// One line of stiffness_sweep.csv: E1 / E2 and whose traction Nitsche reads (or a mortar
+// reference, traction "-"), on level o.sweep_level.
+struct StiffnessPoint {
+  double ratio = 1;
+  std::string traction;
+  MethodResult result;
+};
+// E1 / E2 = 1e-6, 1e-4, ..., 1e6 (E2 as given), Nitsche with body 1's, body 2's and the harmonic
+// traction, and both mortar references (the softer body non-mortar).
+std::vector<StiffnessPoint> stiffness_sweep(const Options& o);
+void write_stiffness_sweep(const std::string& path, const std::vector<StiffnessPoint>& points);
+
 }  // namespace chapter11
