@@ -25,7 +25,7 @@ petsc_packages=(libpetsc-real-dev)
 chapters=(ch01_interface_traces ch02_p1_triangles ch03_pointwise_matching ch04_integral_matching
           ch05_unilateral_uzawa ch06_dual_mortar ch07_quadratic_elements ch08_friction)
 # the chapters after chapter 9 (which needs PETSc and runs between them)
-later_chapters=(ch10_adaptive_contact)
+later_chapters=(ch10_adaptive_contact ch11_nitsche_contact)
 # OpenMPI refuses to start as root unless told that it is meant (CI and this script run as root);
 # its waiting ranks yield the core instead of polling it, which on two cores shared with other
 # work made a run of a second take minutes.
@@ -103,6 +103,8 @@ configure() {
 # Chapter 8's Cattaneo-Mindlin scene: normal load, then shear in ten steps, and the load paths
 # (about 90 s), and its manufactured scene under Tresca's law (about 40 s).
 # Chapter 10's punch (singular corners: adaptive against uniform rates) and its bilateral scene.
+# Chapter 11 at the other mesh ratio, with theta = -1, and its two sweeps on level 4: gamma0
+# for every theta (about 90 s) and the stiffness ratio with each body's traction (about 20 s).
 extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
             "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
             "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"
@@ -113,7 +115,11 @@ extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, squa
             "ch08_friction|cattaneo|--scene cattaneo|chapter 8, Cattaneo-Mindlin"
             "ch08_friction|tresca|--law tresca --no-compare|chapter 8, Tresca"
             "ch10_adaptive_contact|punch|--scene punch|chapter 10, the punch"
-            "ch10_adaptive_contact|bilateral|--scene bilateral|chapter 10, scene bilateral")
+            "ch10_adaptive_contact|bilateral|--scene bilateral|chapter 10, scene bilateral"
+            "ch11_nitsche_contact|ratio_1_3|--h-ratio 1/3|chapter 11, h2/h1 = 1/3"
+            "ch11_nitsche_contact|skew|--theta -1|chapter 11, theta = -1"
+            "ch11_nitsche_contact|gamma0|--sweep gamma0 --levels 5|chapter 11, gamma0 sweep"
+            "ch11_nitsche_contact|stiffness|--sweep stiffness --levels 5|chapter 11, stiffness sweep")
 
 # run_program PROGRAM RESULTS FIGURES [OPTIONS...]: the full output stays in RESULTS; the
 # figures (PNG, and PDF when the program writes them) go to FIGURES, the .vtu files do not.

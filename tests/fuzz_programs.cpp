@@ -285,3 +285,4 @@ TEST(FuzzPrograms, ch06_command_lines_end_in_status_0_or_2) { fuzz(CH06); }
 TEST(FuzzPrograms, ch07_command_lines_end_in_status_0_or_2) { fuzz(CH07); }
 TEST(FuzzPrograms, ch08_command_lines_end_in_status_0_or_2) { fuzz(CH08); }
 TEST(FuzzPrograms, ch10_command_lines_end_in_status_0_or_2) { fuzz(CH10); }
+TEST(FuzzPrograms, ch11_command_lines_end_in_status_0_or_2) { fuzz(CH11); }

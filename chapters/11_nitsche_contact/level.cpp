@@ -5,6 +5,7 @@
 #include "common/contact/bilateral_contact.hpp"
 #include "common/fem/errors.hpp"
 #include "common/timing/stopwatch.hpp"
+#include "krylov.hpp"
 
 namespace chapter11 {
 
@@ -19,11 +20,12 @@ Scene make_scene(const Options& o) {
 
 Level make_level(const Options& o, const Scene& scene, int index) {
   const mortar::TwoBodyGeometry g = mortar::two_body_geometry(o, o.n0 << index, 1.0);
-  Level level{index, g, mortar::make_two_bodies(g, scene.exact->material(0), scene.exact->material(1)), {}, 0, 0, 0, 0, {}, {}};
+  Level level{index, true, g, mortar::make_two_bodies(g, scene.exact->material(0), scene.exact->material(1)), {}, 0, 0, 0, 0, {}, {}};
   level.data = mortar::manufactured_scene_all_sides(level.bodies, *scene.exact);
   level.h1 = o.L / g.n1;
   level.h2 = o.L / g.n2;
   level.h = level.bodies.max_edge_length();
+  level.count_krylov = level.bodies.num_dofs() <= o.krylov_max_dofs;
   // from a / 2 inside the zone to a / 4 outside its right edge, 600 points
   const double a = scene.exact->half_width(), x0 = scene.exact->centre();
   for (int k = 0; k <= 600; ++k) level.sample_x.push_back(x0 + 0.5 * a + k * 0.75 * a / 600);
@@ -72,6 +74,8 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
                                                                   start.size() > 0 ? &start : nullptr);
   r.time_s = clock.seconds();
   r.u = s.u;
+  r.residual = s.residual;
+  if (level.count_krylov) r.krylov_iterations = krylov_iterations(s.last_matrix, options.penalty || options.theta == 1);
   r.newton_steps = s.newton_steps;
   r.converged = s.converged;
   r.solver = s.solver;

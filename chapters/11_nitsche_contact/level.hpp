@@ -27,6 +27,8 @@ struct MethodResult {
   double half_width_error_m = 0, total_force = 0;
   int newton_steps = 0;
   bool converged = true;
+  double residual = 0;  // Nitsche and penalty: max |R| / max |K u| on the free dofs at the end
+  int krylov_iterations = -1;  // of the last linear system (krylov.hpp); mortar: K's; -1: not counted
   std::string solver;
   double time_s = 0;
   std::vector<double> pressure_samples;  // at Level::sample_x
@@ -35,6 +37,7 @@ struct MethodResult {
 
 struct Level {
   int index = 0;
+  bool count_krylov = true;  // count the Krylov iterations of each method's last matrix
   mortar::TwoBodyGeometry geometry;
   mortar::TwoBodies bodies;
   mortar::SceneData data;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "common/contact/constraints.hpp"
 #include "common/contact/contact_fields.hpp"
@@ -10,6 +11,7 @@
 #include "common/contact/pressure_norms.hpp"
 #include "common/fem/dirichlet.hpp"
 #include "common/timing/stopwatch.hpp"
+#include "krylov.hpp"
 
 namespace chapter11 {
 
@@ -39,9 +41,10 @@ MethodResult run_mortar(const Level& level, const Scene& scene, int nonmortar, b
   const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, level.data.F, level.data.dirichlet);
   mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, c, G);
   Eigen::VectorXd u_free, lambda;
+  std::optional<mortar::CondensedContact> condensed;
   if (dual) {
-    mortar::CondensedContact condensed = mortar::condense_contact(reduced);
-    const mortar::DualContactSolution x = mortar::solve_dual_contact(condensed, {});
+    condensed = mortar::condense_contact(reduced);
+    const mortar::DualContactSolution x = mortar::solve_dual_contact(*condensed, {});
     u_free = x.u;
     lambda = x.lambda;
     r.newton_steps = x.iterations;
@@ -55,6 +58,8 @@ MethodResult run_mortar(const Level& level, const Scene& scene, int nonmortar, b
   r.time_s = clock.seconds();
   r.solver = mortar::backend_name(mortar::fastest_spd_backend());
   r.u = system.expand(u_free);
+  // the matrix its sparse solves see: K on the free dofs (standard basis), T^T K T (dual)
+  if (level.count_krylov) r.krylov_iterations = krylov_iterations(dual ? condensed->A : reduced.K, true);
   std::tie(r.err_energy, r.err_l2) = displacement_errors(level, scene, r.u);
   const mortar::InterfaceCurve pressure = mortar::contact_pressure(gamma, c, lambda);
   const auto exact_p = [&](double x) { return scene.exact->pressure(x); };

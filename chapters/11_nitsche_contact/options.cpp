@@ -1,5 +1,6 @@
 #include "options.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/contact/nitsche_contact.hpp"
@@ -24,10 +25,14 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m] (sets p0 = a E* / (2R))", Range::closed(1e-6, 1e12));
   parser.add_choice("start", o.start, {"nested", "cold"},
                     "Newton's start for Nitsche and penalty: the level below's answer interpolated, or u = 0 inside");
+  parser.add_double("krylov-max-dofs", o.krylov_max_dofs,
+                    "count the Krylov iterations of each method's last matrix on levels up to this many unknowns",
+                    Range::closed(0, 1e7));
   parser.add_choice("sweep", o.sweep, {"none", "gamma0", "stiffness"},
                     "also, on --sweep-level: gamma0 = 1e-3 .. 1e3 for theta = 1, 0, -1 and penalty (gamma_sweep.csv), or "
                     "E1/E2 = 1e-6 .. 1e6 with each body's traction (stiffness_sweep.csv)");
-  parser.add_int("sweep-level", o.sweep_level, "the level of the sweeps (0 = coarsest)", Range::closed(0, 9));
+  parser.add_int("sweep-level", o.sweep_level, "the level of the sweeps (0 = coarsest; default 4, or the finest below it)",
+                 Range::closed(0, 9));
   parser.add_string("out", o.out, "output folder");
   parser.add_flag("quick", o.quick, "small sizes for tests (sets n0 = 8, levels = 3; not with --n0 or --levels)");
   parser.add_flag("no-plot", o.no_plot, "write data and scripts but do not run gnuplot");
@@ -36,6 +41,7 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   mortar::set_solver_threads(o.threads);
   if (!parser.given("penalty-gamma0")) o.penalty_gamma0 = o.gamma0;  // penalty is Nitsche without consistency
   parser.apply_quick(o.quick, {{"n0", o.n0, 8}, {"levels", o.levels, 3}});
+  if (!parser.given("sweep-level")) o.sweep_level = std::min(o.sweep_level, o.levels - 1);
   if (o.sweep != "none" && o.sweep_level >= o.levels)
     parser.fail("sweep-level", "level " + std::to_string(o.sweep_level) + " does not exist: levels run from 0 to " +
                                    std::to_string(o.levels - 1));

@@ -25,9 +25,9 @@ void solve_level(const Options& o, const Scene& scene, Level& level, const Level
       level.methods.push_back(run_without_multipliers(level, scene, m, method_options(o, m), nested ? coarser : nullptr,
                                                       nested ? &coarser->methods[k] : nullptr));
     const MethodResult& r = level.methods.back();
-    std::printf("level %d  %-13s energy %.4e  L2 %.4e  pressure %.4e  |a_h - a| %.3e m  steps %2d%s  %.3f s\n",
-                level.index, m.c_str(), r.err_energy, r.err_l2, r.err_pressure, r.half_width_error_m, r.newton_steps,
-                r.converged ? "" : " (no convergence)", r.time_s);
+    std::printf("level %d  %-13s energy %.4e  L2 %.4e  pressure %.4e  |a_h - a| %.3e m  steps %2d%s  Krylov %4d  "
+                "%.3f s\n", level.index, m.c_str(), r.err_energy, r.err_l2, r.err_pressure, r.half_width_error_m,
+                r.newton_steps, r.converged ? "" : " (no convergence)", r.krylov_iterations, r.time_s);
   }
   level.limit_s = mortar::two_body_limit(level.bodies, level.data);
 }
@@ -45,6 +45,7 @@ mortar::Row level_row(const Level& level) {
     row.push_back({"err_pressure_" + r.name, r.err_pressure});
     row.push_back({"half_width_error_m_" + r.name, r.half_width_error_m});
     row.push_back({"newton_steps_" + r.name, static_cast<double>(r.newton_steps)});
+    row.push_back({"krylov_iterations_" + r.name, r.krylov_iterations >= 0 ? r.krylov_iterations : std::nan("")});
     row.push_back({"time_s_" + r.name, r.time_s});
   }
   return row;
@@ -74,13 +75,14 @@ std::vector<SweepPoint> gamma_sweep(const Options& o, const Scene& scene, const 
 void write_sweep(const std::string& path, const std::vector<SweepPoint>& points) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot write " + path);
-  f << "method,theta,gamma0,err_energy,err_l2,err_pressure,half_width_error_m,newton_steps,converged,solver\n";
+  f << "method,theta,gamma0,err_energy,err_l2,err_pressure,half_width_error_m,newton_steps,converged,solver,"
+       "krylov_iterations\n";
   for (const SweepPoint& p : points) {
     const bool penalty = p.theta > 1;
     f << (penalty ? "penalty" : "nitsche") << "," << (penalty ? std::string("") : std::to_string(p.theta)) << ","
       << p.gamma0 << "," << p.result.err_energy << "," << p.result.err_l2 << "," << p.result.err_pressure << ","
       << p.result.half_width_error_m << "," << p.result.newton_steps << "," << (p.result.converged ? 1 : 0) << ","
-      << p.result.solver << "\n";
+      << p.result.solver << "," << p.result.krylov_iterations << "\n";
   }
 }
 

@@ -290,6 +290,7 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
       du = lu.solve(step_system.rhs);
       sol.solver = SparseLu::name();
     }
+    sol.last_matrix = step_system.K;
     double u_max = 0;
     for (std::size_t k = 0; k < step_system.free_dofs.size(); ++k) {
       sol.u[step_system.free_dofs[k]] += du[k];

@@ -104,7 +104,8 @@ struct NitscheSolution {
   bool converged = false;
   std::string solver;  // "CHOLMOD", "UMFPACK", ... (the last step's)
   int lu_fallbacks = 0;  // steps where theta = 1's matrix was not positive definite
-  double residual = 0;  // |R_free| / |F_free| at the end, max norms
+  double residual = 0;  // max |R| / max |K u| over the free dofs at the end
+  SparseMatrix last_matrix;  // the last Newton step's matrix on the free dofs (its conditioning)
 };
 
 // Generalized Newton in the displacements alone, from `start` (both bodies, all dofs; its
