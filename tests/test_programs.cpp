@@ -1326,3 +1326,104 @@ TEST(Programs, ch10_punch_with_too_few_steps_for_its_reference_is_refused_before
   EXPECT_LT(seconds, 1.0);
   EXPECT_FALSE(std::filesystem::exists(dir));
 }
+
+TEST(Programs, ch11_refuses_malformed_input) {
+  expect_all_refused(CH11, common_bad_inputs(),
+                     {{"--E1 -1", "E1"}, {"--E2 0", "E2"}, {"--nu1 0.5", "nu1"}, {"--nu2 0.7", "nu2"},
+                      {"--theta 1.5", "theta"}, {"--theta nan", "theta"}, {"--gamma0 0", "gamma0"},
+                      {"--gamma0 -1", "gamma0"}, {"--penalty-gamma0 inf", "penalty-gamma0"},
+                      {"--traction body3", "traction"}, {"--scene moon", "scene"}, {"--start warm", "start"},
+                      {"--sweep everything", "sweep"}, {"--sweep gamma0 --levels 3 --sweep-level 3", "sweep-level"},
+                      {"--krylov-max-dofs -1", "krylov-max-dofs"}, {"--h-ratio 0", "h-ratio"},
+                      {"--quick --levels 4", "levels"}, {"--E1 1e11", "E1"}, {"--levels 11", "levels"}});
+}
+
+// The "done means" at --quick sizes (levels of n1 = 8, 16, 32; 3,146 dofs at the end):
+// convergence.csv with one column group per method, local_rates.csv, each method's energy rate,
+// Newton steps and limit_ratio in summary.json, and the finest errors of each method pinned.
+// They were computed once by this program and checked independently:
+//  - the standard and dual mortar columns are chapter 5's own program on the same meshes
+//    (ch05_unilateral_uzawa --scene hertz-exact --n0 8 --levels 3, with and without
+//    --solver dual-newton), run here beside it: the same numbers to 1e-9;
+//  - Nitsche's and penalty's discrete equations are those of a brute-force quadrature
+//    (test_nitsche_contact: 4000 midpoints a segment, and central differences for the matrix),
+//    their Newton residual is below 1e-12, and a cold start (u = 0 inside: 9-11 Newton steps
+//    instead of 5-6) reaches the same errors to 1e-9.
+TEST(Programs, ch11_quick_pins_the_finest_errors_of_every_method) {
+  struct Pinned {
+    const char* method;
+    double energy, l2, pressure;
+  };
+  const Pinned pinned[] = {{"nitsche", 0.1086286723, 0.00345013533, 0.1576509056},
+                           {"penalty", 0.1075315622, 0.003676347246, 0.1546620934},
+                           {"penalty_fixed", 0.1085011062, 0.009745535249, 0.04807353409},
+                           {"mortar", 0.1095315672, 0.003290620788, 0.1427825748},
+                           {"dual", 0.1083101476, 0.003558901093, 0.04363608588}};
+  const std::string dir = out_dir("ch11_quick"), cold = out_dir("ch11_quick_cold");
+  const ProgramRun r = run(std::string(CH11) + " --quick --no-plot --out " + dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  expect_output_contract(dir);
+  ASSERT_TRUE(std::filesystem::exists(dir + "/local_rates.csv"));
+  const ProgramRun c = run(std::string(CH11) + " --quick --no-plot --start cold --out " + cold);
+  ASSERT_EQ(c.status, 0) << c.output;
+  const std::string csv = dir + "/convergence.csv";
+  ASSERT_EQ(csv_column(csv, "h").size(), 3u);
+  for (const Pinned& p : pinned) {
+    const std::string m = p.method;
+    EXPECT_NEAR(csv_column(csv, "err_energy_" + m).back(), p.energy, 1e-9) << m;
+    EXPECT_NEAR(csv_column(csv, "err_l2_" + m).back(), p.l2, 1e-11) << m;
+    EXPECT_NEAR(csv_column(csv, "err_pressure_" + m).back(), p.pressure, 1e-9) << m;
+    EXPECT_NEAR(summary_value(dir, "results", "err_energy_" + m), p.energy, 1e-9) << m;
+    EXPECT_TRUE(std::isfinite(summary_value(dir, "rates", "err_energy_" + m))) << m;
+    EXPECT_GE(summary_value(dir, "results", "newton_steps_" + m), 1.0) << m;
+    EXPECT_GT(summary_value(dir, "results", "limit_ratio_" + m), 0.0) << m;
+    if (m != "mortar" && m != "dual") {
+      EXPECT_LT(summary_value(dir, "results", "newton_residual_" + m), 1e-12) << m;
+      EXPECT_LT(summary_value(dir, "results", "patch_test_rel_error_" + m), 1e-12) << m;
+      EXPECT_NEAR(csv_column(cold + "/convergence.csv", "err_energy_" + m).back(), p.energy, 1e-9) << m;
+      EXPECT_NEAR(csv_column(cold + "/convergence.csv", "err_l2_" + m).back(), p.l2, 1e-11) << m;
+      EXPECT_LT(summary_value(dir, "results", "newton_steps_" + m), summary_value(cold, "results", "newton_steps_" + m))
+          << m << ": the nested start saves Newton steps";
+    }
+  }
+  EXPECT_EQ(summary_value(dir, "results", "limit_ratio"), summary_value(dir, "results", "limit_ratio_nitsche"));
+  // chapter 5's program on the same meshes: the mortar columns
+  for (const bool dual : {false, true}) {
+    const std::string ch05 = out_dir(dual ? "ch11_ch05_dual" : "ch11_ch05");
+    const ProgramRun r5 = run(std::string(CH05) + " --scene hertz-exact --n0 8 --levels 3 --no-compare --no-plot" +
+                              (dual ? " --solver dual-newton" : "") + " --out " + ch05);
+    ASSERT_EQ(r5.status, 0) << r5.output;
+    const std::string m = dual ? "dual" : "mortar";
+    for (const char* e : {"err_energy", "err_l2", "err_pressure", "half_width_error_m"})
+      EXPECT_NEAR(csv_column(ch05 + "/convergence.csv", e).back(), csv_column(csv, std::string(e) + "_" + m).back(), 1e-9)
+          << m << ": " << e;
+  }
+}
+
+// What the theory says about gamma0, measured at --quick sizes: theta = -1 is stable for any
+// gamma0 > 0 (Chouly, Hild and Renard 2015) and at gamma0 = 1e-3 stays within 2% of the mortar's
+// energy error (measured 0.1110 against 0.1095); theta = 1 needs gamma0 large enough and at 1e-3
+// does not converge (60 Newton steps), its iterate 12 times as far off; theta = 0 converges
+// but to an error of 0.73. Penalty at the same gamma is the fixed-gamma failure mode.
+TEST(Programs, ch11_skew_symmetric_nitsche_is_stable_for_a_tiny_gamma0_and_symmetric_is_not) {
+  std::map<int, double> energy;
+  std::map<int, double> converged;
+  for (const int theta : {1, 0, -1}) {
+    const std::string dir = out_dir("ch11_theta_" + std::to_string(theta + 1));
+    const ProgramRun r = run(std::string(CH11) + " --quick --no-plot --gamma0 1e-3 --theta " + std::to_string(theta) +
+                             " --out " + dir);
+    ASSERT_EQ(r.status, 0) << r.output;
+    energy[theta] = summary_value(dir, "results", "err_energy_nitsche");
+    const std::string json = file_text(dir + "/summary.json");
+    converged[theta] = json.find("\"converged_nitsche\": true") != std::string::npos ? 1.0
+                       : json.find("\"converged_nitsche\": false") != std::string::npos ? 0.0 : std::nan("");
+    if (theta == -1) {
+      EXPECT_NEAR(energy[theta] / summary_value(dir, "results", "err_energy_mortar"), 1.0, 0.02);
+    }
+  }
+  EXPECT_EQ(converged[-1], 1.0);
+  EXPECT_EQ(converged[0], 1.0);
+  EXPECT_EQ(converged[1], 0.0);
+  EXPECT_GT(energy[1], 10 * energy[-1]);
+  EXPECT_GT(energy[0], 5 * energy[-1]);
+}
