@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# A table of chapter 11's notes, remade from a run of ch11_nitsche_contact, as Markdown on stdout.
+# The notes hold its output between "<!-- table: ... -->" markers (chapters/evidence_tables.sh
+# remakes and checks them).
+#
+#   bash chapters/11_nitsche_contact/methods_table.sh MODE [OPTION...]
+#
+#   rates:COLUMN      one row per method: the local rates of COLUMN (err_energy, err_l2,
+#                     err_pressure) between levels k-1 and k, and its coarsest and finest values
+#   finest            one row per method on the finest level: the errors, |a_h - a|, Newton
+#                     steps, Krylov iterations (where counted)
+#   speed             one row per method: its time on each level divided by the level's physical
+#                     limit (wall times: they differ from run to run, so no page checks them)
+#   sweep:COLUMN      --sweep gamma0: COLUMN (err_energy, err_pressure, newton_steps) against
+#                     gamma0, one column per variant; runs that did not converge are marked
+#   stiffness:COLUMN  --sweep stiffness: COLUMN against E1 / E2, one column per traction and
+#                     for the two mortar references
+#
+# A run with the same options is made once and kept in OUT (default: results/ch11_tables/
+# <options>) while it is newer than the program; BUILD (default: build) holds the program.
+set -euo pipefail
+[ $# -ge 1 ] || { sed -n '2,18p' "$0" >&2; exit 2; }
+mode=$1
+shift
+build=${BUILD:-build}
+program=$build/ch11_nitsche_contact
+[ -x "$program" ] || { echo "methods_table.sh: no $program (cmake --build $build --target ch11_nitsche_contact)" >&2; exit 2; }
+case "$mode" in
+  rates:* | finest | speed | sweep:* | stiffness:*) ;;
+  *) echo "methods_table.sh: unknown mode '$mode' (rates:COLUMN, finest, speed, sweep:COLUMN, stiffness:COLUMN)" >&2; exit 2 ;;
+esac
+name=$(echo "default $*" | tr -c 'A-Za-z0-9.\n-' '_')
+out=${OUT:-results/ch11_tables/$name}
+if [ ! -f "$out/summary.json" ] || [ "$program" -nt "$out/summary.json" ]; then
+  mkdir -p "$out"
+  "$program" "$@" --no-plot --out "$out" > "$out.log" 2>&1 || { tail -n 20 "$out.log" >&2; exit 1; }
+fi
+python3 - "$out" "$mode" <<'PY'
+import csv, json, math, sys
+
+out, mode = sys.argv[1], sys.argv[2]
+methods = [("nitsche", "Nitsche"), ("penalty", "penalty, gamma = gamma0 E/h"), ("penalty_fixed", "penalty, gamma fixed"),
+           ("mortar", "mortar, standard basis"), ("dual", "mortar, dual basis")]
+
+
+def rows(name):
+    with open(f"{out}/{name}") as f:
+        return list(csv.DictReader(f))
+
+
+def number(text):
+    try:
+        v = float(text)
+    except (TypeError, ValueError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+def show(v, digits=3):
+    return "-" if v is None else f"{v:.{digits}g}"
+
+
+kind, _, column = mode.partition(":")
+if kind == "rates":
+    local, levels = rows("local_rates.csv"), rows("convergence.csv")
+    pairs = len(local)
+    print("| method |" + "".join(f" {k}-{k + 1} |" for k in range(pairs)) + " coarsest level | finest level |")
+    print("|---|" + "---|" * pairs + "---|---|")
+    for key, label in methods:
+        c = f"{column}_{key}"
+        rates = [r[c] for r in local]
+        cells = " | ".join("-" if number(r) is None else f"{float(r):.2f}" for r in rates)
+        print(f"| {label} | {cells} | {show(number(levels[0][c]))} | {show(number(levels[-1][c]))} |")
+elif kind == "finest":
+    last = rows("convergence.csv")[-1]
+    print("| method | energy error | L2 error | pressure error | \\|a_h - a\\| [m] | Newton steps | Krylov iterations |")
+    print("|---|---|---|---|---|---|---|")
+    for key, label in methods:
+        krylov = number(last[f"krylov_iterations_{key}"])
+        print(f"| {label} | {show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
+              f"{show(number(last[f'err_pressure_{key}']))} | {show(number(last[f'half_width_error_m_{key}']))} | "
+              f"{int(float(last[f'newton_steps_{key}']))} | {'-' if krylov is None else int(krylov)} |")
+elif kind == "speed":
+    levels = rows("convergence.csv")
+    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
+    print("|---|" + "---|" * len(levels))
+    print("| physical limit [s] | " + " | ".join(show(number(r["limit_s"])) for r in levels) + " |")
+    for key, label in methods:
+        cells = [show(number(r[f"time_s_{key}"]) / number(r["limit_s"])) for r in levels]
+        print(f"| {label} | " + " | ".join(cells) + " |")
+elif kind == "sweep":
+    data = rows("gamma_sweep.csv")
+    variants = [("nitsche", "1.000000", "theta = 1"), ("nitsche", "0.000000", "theta = 0"),
+                ("nitsche", "-1.000000", "theta = -1"), ("penalty", "", "penalty")]
+    print("| gamma0 |" + "".join(f" {v[2]} |" for v in variants))
+    print("|---|" + "---|" * len(variants))
+    for g in sorted({float(r["gamma0"]) for r in data}):
+        cells = []
+        for method, theta, _ in variants:
+            r = next(r for r in data if r["method"] == method and r["theta"] == theta and float(r["gamma0"]) == g)
+            v = show(number(r[column]))
+            cells.append(v if r["converged"] == "1" else v + " (no conv.)")
+        print(f"| {g:.3g} | " + " | ".join(cells) + " |")
+elif kind == "stiffness":
+    data = rows("stiffness_sweep.csv")
+    kinds = [("body1", "Nitsche, body 1's traction"), ("body2", "Nitsche, body 2's traction"),
+             ("harmonic", "Nitsche, weighted h/E"), ("mortar", "mortar, standard"), ("dual", "mortar, dual")]
+    print("| E1/E2 |" + "".join(f" {k[1]} |" for k in kinds))
+    print("|---|" + "---|" * len(kinds))
+    for ratio in sorted({float(r["E1_over_E2"]) for r in data}):
+        cells = []
+        for k, _ in kinds:
+            r = next(r for r in data if float(r["E1_over_E2"]) == ratio and (r["traction"] == k or r["method"] == k))
+            v = show(number(r[column]))
+            cells.append(v if r["converged"] == "1" else v + " (no conv.)")
+        print(f"| {ratio:.0e} | " + " | ".join(cells) + " |")
+PY
