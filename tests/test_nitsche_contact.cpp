@@ -4,6 +4,7 @@
 #include <random>
 
 #include "common/contact/contact_scenes.hpp"
+#include "common/contact/hertz_half_planes.hpp"
 #include "common/contact/nitsche_contact.hpp"
 #include "common/interface/interface_trace.hpp"
 
@@ -221,4 +222,27 @@ TEST(NitscheContact, a_start_of_the_wrong_size_is_refused) {
   const SceneData scene = patch_test_scene(b, 0.01);
   const Eigen::VectorXd start = Eigen::VectorXd::Zero(3);
   EXPECT_THROW(solve_nitsche_contact(b, scene, parabola, NitscheOptions{}, &start), std::invalid_argument);
+}
+
+// The two ways of solving a Newton step (nitsche_steps.hpp) take the same steps to the same
+// answer, on chapter 5's exact Hertz scene (u prescribed on every outer side, so K_ff alone is
+// positive definite and the condensed way is taken), for every variant.
+TEST(NitscheContact, condensed_and_sparse_newton_steps_agree) {
+  TwoBodyGeometry g;
+  g.n1 = 16; g.m1 = 16; g.n2 = 11; g.m2 = 11; g.H1 = g.H2 = 1;
+  const Material m(1, 0.3);
+  const HertzHalfPlanes exact(m, m, 0.5, std::sqrt(2.0) / 6, 1);
+  const TwoBodies b = make_two_bodies(g, m, m);
+  const SceneData scene = manufactured_scene_all_sides(b, exact);
+  for (NitscheOptions o : variants()) {
+    o.linear_solver = NitscheLinearSolver::condensed;
+    const NitscheSolution condensed = solve_nitsche_contact(b, scene, parabola, o);
+    o.linear_solver = NitscheLinearSolver::sparse;
+    const NitscheSolution sparse = solve_nitsche_contact(b, scene, parabola, o);
+    ASSERT_TRUE(condensed.converged && sparse.converged);
+    EXPECT_NE(condensed.solver, sparse.solver);
+    EXPECT_EQ(condensed.newton_steps, sparse.newton_steps) << "theta " << o.theta << ", w " << o.body1_weight;
+    EXPECT_LT((condensed.u - sparse.u).lpNorm<Eigen::Infinity>(), 1e-12 * sparse.u.lpNorm<Eigen::Infinity>());
+    EXPECT_LT(condensed.residual, 1e-12);
+  }
 }

@@ -34,6 +34,7 @@ Level make_level(const Options& o, const Scene& scene, int index) {
 
 mortar::NitscheOptions method_options(const Options& o, const std::string& method) {
   mortar::NitscheOptions n;
+  n.linear_solver = o.linear_solver == "sparse" ? mortar::NitscheLinearSolver::sparse : mortar::NitscheLinearSolver::condensed;
   if (method == "nitsche") {
     n.theta = o.theta;
     n.gamma0 = o.gamma0;
@@ -70,8 +71,10 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
       start.segment(level.bodies.offset(l), level.bodies.body(l).mesh.num_dofs()) = mortar::interpolate_from_rectangle(
           mortar::body_rectangle(coarser->geometry, l), coarser->bodies.part(coarse_result->u, l), level.bodies.body(l).mesh);
   }
-  const mortar::NitscheSolution s = mortar::solve_nitsche_contact(level.bodies, level.data, scene.gap, options,
-                                                                  start.size() > 0 ? &start : nullptr);
+  mortar::NitscheOptions run = options;
+  run.keep_last_matrix = level.count_krylov;
+  const mortar::NitscheSolution s =
+      mortar::solve_nitsche_contact(level.bodies, level.data, scene.gap, run, start.size() > 0 ? &start : nullptr);
   r.time_s = clock.seconds();
   r.u = s.u;
   r.residual = s.residual;

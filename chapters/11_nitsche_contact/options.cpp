@@ -23,6 +23,9 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 10));
   mortar::add_two_body_options(parser, o);
   parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m] (sets p0 = a E* / (2R))", Range::closed(1e-6, 1e12));
+  parser.add_choice("linear-solver", o.linear_solver, {"condensed", "sparse"},
+                    "Newton steps of Nitsche and penalty: K factorized once, contact dofs last, a dense solve on "
+                    "Gamma_c each step; or the whole matrix factorized each step");
   parser.add_choice("start", o.start, {"nested", "cold"},
                     "Newton's start for Nitsche and penalty: the level below's answer interpolated, or u = 0 inside");
   parser.add_double("krylov-max-dofs", o.krylov_max_dofs,

@@ -5,12 +5,11 @@
 #include <map>
 #include <stdexcept>
 
+#include "common/contact/nitsche_steps.hpp"
 #include "common/fem/dirichlet.hpp"
 #include "common/fem/quadrature.hpp"
 #include "common/interface/interface_trace.hpp"
 #include "common/interface/merged_grid.hpp"
-#include "common/linalg/sparse_lu.hpp"
-#include "common/linalg/spd_solver.hpp"
 
 namespace mortar {
 
@@ -254,47 +253,25 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
   sol.u = start != nullptr ? *start : Eigen::VectorXd::Zero(bodies.num_dofs());
   if (sol.u.size() != bodies.num_dofs()) throw std::invalid_argument("solve_nitsche_contact: the start has the wrong size");
   for (std::size_t k = 0; k < scene.dirichlet.dofs.size(); ++k) sol.u[scene.dirichlet.dofs[k]] = scene.dirichlet.values[k];
-  // the increments of the prescribed dofs are 0: the same dofs, zero values
-  DirichletData increments = scene.dirichlet;
-  std::fill(increments.values.begin(), increments.values.end(), 0.0);
-  const bool symmetric = o.penalty || o.theta == 1;
-  SpdSolver cholesky;
-  SparseLu lu;
-  bool cholesky_analysed = false, lu_analysed = false;
+  // K_ff and the numbering, once; the increments of the prescribed dofs are 0
+  const ReducedSystem free = eliminate_dirichlet(K, scene.F, scene.dirichlet);
+  std::vector<int> contact;
+  for (const NitscheSegment& s : segments) contact.insert(contact.end(), s.dofs.begin(), s.dofs.end());
+  const std::unique_ptr<NitscheStepSolver> steps =
+      make_step_solver(o.linear_solver, free, contact, o.penalty || o.theta == 1);
   std::vector<Eigen::Triplet<double>> triplets;
   for (int step = 1; step <= o.max_newton_steps; ++step) {
     Eigen::VectorXd R = K * sol.u - scene.F;
     triplets.clear();
     add_nitsche_terms(segments, gap, o, sol.u, R, &triplets);
-    SparseMatrix C(bodies.num_dofs(), bodies.num_dofs());
-    C.setFromTriplets(triplets.begin(), triplets.end());
-    const ReducedSystem step_system = eliminate_dirichlet(SparseMatrix(K + C), -R, increments);
-    Eigen::VectorXd du;
-    bool solved = false;
-    if (symmetric) {
-      try {  // positive definite unless gamma0 is too small for theta = 1
-        if (cholesky_analysed) cholesky.refactorize(step_system.K);
-        else cholesky.factorize(step_system.K);
-        cholesky_analysed = true;
-        du = cholesky.solve(step_system.rhs);
-        sol.solver = backend_name(cholesky.backend());
-        solved = true;
-      } catch (const std::runtime_error&) {
-        ++sol.lu_fallbacks;
-      }
-    }
-    if (!solved) {
-      if (lu_analysed) lu.refactorize(step_system.K);
-      else lu.factorize(step_system.K);
-      lu_analysed = true;
-      du = lu.solve(step_system.rhs);
-      sol.solver = SparseLu::name();
-    }
-    sol.last_matrix = step_system.K;
+    Eigen::VectorXd r(free.free_dofs.size());
+    for (std::size_t k = 0; k < free.free_dofs.size(); ++k) r[k] = -R[free.free_dofs[k]];
+    const Eigen::VectorXd du = steps->solve(triplets, r);
+    sol.solver = steps->name();
     double u_max = 0;
-    for (std::size_t k = 0; k < step_system.free_dofs.size(); ++k) {
-      sol.u[step_system.free_dofs[k]] += du[k];
-      u_max = std::max(u_max, std::fabs(sol.u[step_system.free_dofs[k]]));
+    for (std::size_t k = 0; k < free.free_dofs.size(); ++k) {
+      sol.u[free.free_dofs[k]] += du[k];
+      u_max = std::max(u_max, std::fabs(sol.u[free.free_dofs[k]]));
     }
     sol.newton_steps = step;
     if (!du.allFinite()) break;
@@ -303,6 +280,8 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
       break;
     }
   }
+  sol.lu_fallbacks = steps->lu_fallbacks();
+  if (o.keep_last_matrix) sol.last_matrix = free_block_plus(free, triplets);
   // the residual left, against the size of K u on the free dofs
   Eigen::VectorXd Ku = K * sol.u, R = Ku - scene.F;
   add_nitsche_terms(segments, gap, o, sol.u, R, nullptr);

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "common/contact/contact_scenes.hpp"
+#include "common/contact/nitsche_steps.hpp"
 #include "common/contact/two_bodies.hpp"
 
 namespace mortar {
@@ -47,6 +48,8 @@ struct NitscheOptions {
   double body1_weight = 1;  // w: whose traction p(u) reads, 1 = body 1, 0 = body 2
   int max_newton_steps = 60;
   double tol = 1e-10;  // Newton stops when |du| <= tol |u| (max norms)
+  NitscheLinearSolver linear_solver = NitscheLinearSolver::condensed;  // nitsche_steps.hpp
+  bool keep_last_matrix = false;  // NitscheSolution::last_matrix (for its conditioning)
 };
 
 // The weight of body 1 that makes gamma the smallest coercive choice for two materials:
@@ -102,17 +105,17 @@ struct NitscheSolution {
   Eigen::VectorXd u;  // both bodies, all dofs
   int newton_steps = 0;
   bool converged = false;
-  std::string solver;  // "CHOLMOD", "UMFPACK", ... (the last step's)
-  int lu_fallbacks = 0;  // steps where theta = 1's matrix was not positive definite
+  std::string solver;  // the last step's linear solver (nitsche_steps.hpp)
+  int lu_fallbacks = 0;  // symmetric steps whose matrix was not positive definite (solved by LU)
   double residual = 0;  // max |R| / max |K u| over the free dofs at the end
-  SparseMatrix last_matrix;  // the last Newton step's matrix on the free dofs (its conditioning)
+  SparseMatrix last_matrix;  // keep_last_matrix: the last Newton step's matrix on the free dofs
 };
 
 // Generalized Newton in the displacements alone, from `start` (both bodies, all dofs; its
 // prescribed values are replaced by the scene's) or u = 0 on the free dofs: each step solves
-// (K + C'(u)) du = -R(u) on the free dofs. The matrix is symmetric for theta = 1 and for
-// penalty: Cholesky (CHOLMOD), positive definite when gamma0 is large enough, else LU with the
-// step counted; nonsymmetric for theta != 1: LU (UMFPACK), its ordering kept across steps.
+// (K + C'(u)) du = -R(u) on the free dofs, as options.linear_solver says (nitsche_steps.hpp).
+// The matrix is symmetric for theta = 1 and penalty (positive definite when gamma0 is large
+// enough; else LU, the step counted), nonsymmetric for theta != 1.
 NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& scene,
                                       const std::function<double(double)>& gap, const NitscheOptions& options,
                                       const Eigen::VectorXd* start = nullptr);
