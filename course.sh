@@ -116,7 +116,7 @@ extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, squa
             "ch08_friction|tresca|--law tresca --no-compare|chapter 8, Tresca"
             "ch10_adaptive_contact|punch|--scene punch|chapter 10, the punch"
             "ch10_adaptive_contact|bilateral|--scene bilateral|chapter 10, scene bilateral"
-            "ch11_nitsche_contact|ratio_1_3|--h-ratio 1/3|chapter 11, h2/h1 = 1/3"
+            "ch11_nitsche_contact|ratio_1_3|--h-ratio 1/3 --levels 6|chapter 11, h2/h1 = 1/3"
             "ch11_nitsche_contact|skew|--theta -1|chapter 11, theta = -1"
             "ch11_nitsche_contact|gamma0|--sweep gamma0 --levels 5|chapter 11, gamma0 sweep"
             "ch11_nitsche_contact|stiffness|--sweep stiffness --levels 5|chapter 11, stiffness sweep")

@@ -1,5 +1,6 @@
 #include "level.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/contact/bilateral_contact.hpp"
@@ -20,12 +21,24 @@ Scene make_scene(const Options& o) {
 
 Level make_level(const Options& o, const Scene& scene, int index) {
   const mortar::TwoBodyGeometry g = mortar::two_body_geometry(o, o.n0 << index, 1.0);
-  Level level{index, true, g, mortar::make_two_bodies(g, scene.exact->material(0), scene.exact->material(1)), {}, 0, 0, 0, 0, {}, {}};
+  Level level{index, true, g, mortar::make_two_bodies(g, scene.exact->material(0), scene.exact->material(1)), {}, 0, 0, 0, 0,
+              {}, scene.gap, {}};
   level.data = mortar::manufactured_scene_all_sides(level.bodies, *scene.exact);
   level.h1 = o.L / g.n1;
   level.h2 = o.L / g.n2;
   level.h = level.bodies.max_edge_length();
   level.count_krylov = level.bodies.num_dofs() <= o.krylov_max_dofs;
+  if (o.gap == "interpolated") {
+    std::vector<double> x, value;
+    for (const mortar::NitscheSegment& s : mortar::nitsche_segments(level.bodies, {})) x.push_back(s.a);
+    x.push_back(o.L);
+    for (double xi : x) value.push_back(scene.gap(xi));
+    level.gap = [x, value](double p) {
+      const std::size_t e = std::clamp<std::size_t>(std::upper_bound(x.begin(), x.end(), p) - x.begin(), 1, x.size() - 1) - 1;
+      const double t = (p - x[e]) / (x[e + 1] - x[e]);
+      return (1 - t) * value[e] + t * value[e + 1];
+    };
+  }
   // from a / 2 inside the zone to a / 4 outside its right edge, 600 points
   const double a = scene.exact->half_width(), x0 = scene.exact->centre();
   for (int k = 0; k <= 600; ++k) level.sample_x.push_back(x0 + 0.5 * a + k * 0.75 * a / 600);
@@ -74,7 +87,7 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
   mortar::NitscheOptions run = options;
   run.keep_last_matrix = level.count_krylov;
   const mortar::NitscheSolution s =
-      mortar::solve_nitsche_contact(level.bodies, level.data, scene.gap, run, start.size() > 0 ? &start : nullptr);
+      mortar::solve_nitsche_contact(level.bodies, level.data, level.gap, run, start.size() > 0 ? &start : nullptr);
   r.time_s = clock.seconds();
   r.u = s.u;
   r.residual = s.residual;
@@ -84,7 +97,7 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
   r.solver = s.solver;
   std::tie(r.err_energy, r.err_l2) = displacement_errors(level, scene, s.u);
   const auto segments = mortar::nitsche_segments(level.bodies, options);
-  const auto pressure = mortar::nitsche_pressure(segments, scene.gap, options, s.u);
+  const auto pressure = mortar::nitsche_pressure(segments, level.gap, options, s.u);
   const auto exact_p = [&](double x) { return scene.exact->pressure(x); };
   const auto [error, norm] = mortar::pressure_l2_error(pressure, exact_p, scene.exact->pressure_kinks());
   r.err_pressure = error / norm;

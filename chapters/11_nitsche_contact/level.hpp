@@ -43,6 +43,9 @@ struct Level {
   mortar::SceneData data;
   double h = 0, h1 = 0, h2 = 0, limit_s = 0;
   std::vector<double> sample_x;  // where pressures are sampled for the figure
+  // the gap every method reads: the scene's g, or (--gap interpolated) its linear interpolant
+  // on the level's merged grid, which a P1 jump can follow exactly
+  std::function<double(double)> gap;
   std::vector<MethodResult> methods;
 };
 

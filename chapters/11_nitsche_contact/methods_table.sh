@@ -7,8 +7,13 @@
 #
 #   rates:COLUMN      one row per method: the local rates of COLUMN (err_energy, err_l2,
 #                     err_pressure) between levels k-1 and k, and its coarsest and finest values
+#   summary           one row per method: the energy and L2 rates over the three finest levels
+#                     (summary.json), the finest level's errors and its Newton steps
 #   finest            one row per method on the finest level: the errors, |a_h - a|, Newton
 #                     steps, Krylov iterations (where counted)
+#   steps             one row per method: its Newton steps (mortar: active-set steps) on each level
+#   krylov            one row per method: the Krylov iterations of its last matrix on each level
+#                     where they were counted (--krylov-max-dofs), and K's beside them
 #   speed             one row per method: its time on each level divided by the level's physical
 #                     limit (wall times: they differ from run to run, so no page checks them)
 #   sweep:COLUMN      --sweep gamma0: COLUMN (err_energy, err_pressure, newton_steps) against
@@ -26,8 +31,9 @@ build=${BUILD:-build}
 program=$build/ch11_nitsche_contact
 [ -x "$program" ] || { echo "methods_table.sh: no $program (cmake --build $build --target ch11_nitsche_contact)" >&2; exit 2; }
 case "$mode" in
-  rates:* | finest | speed | sweep:* | stiffness:*) ;;
-  *) echo "methods_table.sh: unknown mode '$mode' (rates:COLUMN, finest, speed, sweep:COLUMN, stiffness:COLUMN)" >&2; exit 2 ;;
+  rates:* | summary | finest | steps | krylov | speed | sweep:* | stiffness:*) ;;
+  *) echo "methods_table.sh: unknown mode '$mode' (rates:COLUMN, summary, finest, steps, krylov, speed, sweep:COLUMN, stiffness:COLUMN)" >&2
+     exit 2 ;;
 esac
 name=$(echo "default $*" | tr -c 'A-Za-z0-9.\n-' '_')
 out=${OUT:-results/ch11_tables/$name}
@@ -71,6 +77,28 @@ if kind == "rates":
         rates = [r[c] for r in local]
         cells = " | ".join("-" if number(r) is None else f"{float(r):.2f}" for r in rates)
         print(f"| {label} | {cells} | {show(number(levels[0][c]))} | {show(number(levels[-1][c]))} |")
+elif kind == "summary":
+    rates = json.load(open(f"{out}/summary.json"))["rates"]
+    last = rows("convergence.csv")[-1]
+    print("| method | energy rate | L2 rate | energy error | L2 error | pressure error | Newton steps |")
+    print("|---|---|---|---|---|---|---|")
+    for key, label in methods:
+        print(f"| {label} | {rates[f'err_energy_{key}']:.2f} | {rates[f'err_l2_{key}']:.2f} | "
+              f"{show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
+              f"{show(number(last[f'err_pressure_{key}']))} | {int(float(last[f'newton_steps_{key}']))} |")
+elif kind == "steps":
+    levels = rows("convergence.csv")
+    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
+    print("|---|" + "---|" * len(levels))
+    for key, label in methods:
+        print(f"| {label} | " + " | ".join(str(int(float(r[f"newton_steps_{key}"]))) for r in levels) + " |")
+elif kind == "krylov":
+    levels = [r for r in rows("convergence.csv") if number(r["krylov_iterations_nitsche"]) is not None]
+    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
+    print("|---|" + "---|" * len(levels))
+    for key, label in methods:
+        label = label + (" (K)" if key == "mortar" else " (T^T K T)" if key == "dual" else "")
+        print(f"| {label} | " + " | ".join(str(int(float(r[f"krylov_iterations_{key}"]))) for r in levels) + " |")
 elif kind == "finest":
     last = rows("convergence.csv")[-1]
     print("| method | energy error | L2 error | pressure error | \\|a_h - a\\| [m] | Newton steps | Krylov iterations |")

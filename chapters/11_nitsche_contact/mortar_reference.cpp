@@ -37,7 +37,7 @@ MethodResult run_mortar(const Level& level, const Scene& scene, int nonmortar, b
   const mortar::Constraints c =
       mortar::constraint_rows(bodies, gamma, mortar::matching_rows(gamma, mortar::Matching::integral),
                               level.data.prescribed_mask(bodies.num_dofs()));
-  const Eigen::VectorXd G = mortar::tested_gap(gamma, c, scene.gap);
+  const Eigen::VectorXd G = mortar::tested_gap(gamma, c, level.gap);
   const mortar::ReducedSystem system = mortar::eliminate_dirichlet(K, level.data.F, level.data.dirichlet);
   mortar::SaddlePointProblem reduced = mortar::reduce_to_free_dofs(system, c, G);
   Eigen::VectorXd u_free, lambda;

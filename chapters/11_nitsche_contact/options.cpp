@@ -23,6 +23,8 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   parser.add_int("levels", o.levels, "refinement levels, h halving each time (rates need 3)", Range::closed(3, 10));
   mortar::add_two_body_options(parser, o);
   parser.add_double("R", o.R, "radius of the gap (x - L/2)^2 / (2R) [m] (sets p0 = a E* / (2R))", Range::closed(1e-6, 1e12));
+  parser.add_choice("gap", o.gap, {"exact", "interpolated"},
+                    "the gap every method reads: g, or its linear interpolant on the merged grid (a P1 jump can match it)");
   parser.add_choice("linear-solver", o.linear_solver, {"condensed", "sparse"},
                     "Newton steps of Nitsche and penalty: K factorized once, contact dofs last, a dense solve on "
                     "Gamma_c each step; or the whole matrix factorized each step");

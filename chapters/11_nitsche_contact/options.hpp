@@ -27,6 +27,7 @@ struct Options : mortar::TwoBodyOptions {
   // Krylov iterations (krylov.hpp) on levels up to this many unknowns: at 191k, five of them cost
   // 50 s, more than every solve of the level together
   double krylov_max_dofs = 60000;
+  std::string gap = "exact";  // or "interpolated": g's linear interpolant on each level's merged grid
   std::string linear_solver = "condensed";  // each Newton step's solve (common/contact/nitsche_steps.hpp)
   std::string start = "nested";  // Nitsche and penalty: from the level below, or "cold" (u = 0 inside)
   std::string sweep = "none";  // "gamma0": errors and Newton steps against gamma0 for every theta
