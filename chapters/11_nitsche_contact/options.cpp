@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/contact/nitsche_contact.hpp"
+#include "common/linalg/memory_estimate.hpp"
 #include "common/linalg/spd_solver.hpp"
 
 namespace chapter11 {
@@ -53,13 +54,24 @@ void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** ar
   mortar::check_two_body_meshes(parser, o, o.n0, o.levels, 1.0);  // square cells
   mortar::check_stiffness_ratio(parser, o);
   mortar::choose_softer_nonmortar(parser, o);  // the mortar references' non-mortar side
-  // the finest level's dofs: the sparse solves are the memory (about 2 kB per dof with the
-  // mortar references' dense blocks on Gamma_c, far below the machine at 10 levels of n0 = 4)
+  // The finest level's memory, part by part: the sparse solves (at most 3.5 kB a dof, as in
+  // chapter 5), the standard mortar's dense blocks on Gamma_c (chapter 5's S = B K^-1 B^T), and
+  // Nitsche's Schur complement on the contact dofs c (S, S + C and its factor), which
+  // nitsche_steps.cpp only builds up to 5000 dofs.
   const double n1 = std::ldexp(static_cast<double>(o.n0), o.levels - 1);
   const double n2 = std::max(2.0, std::round(n1 / o.h_ratio));
-  const double dofs = 2 * (n1 + 1) * (std::round(n1 * o.H1 / o.L) + 1) + 2 * (n2 + 1) * (std::round(n2 * o.H2 / o.L) + 1);
+  const double dofs = 2 * (n1 + 1) * (std::max(1.0, std::round(n1 * o.H1 / o.L)) + 1) +
+                      2 * (n2 + 1) * (std::max(1.0, std::round(n2 * o.H2 / o.L)) + 1);
   if (dofs > 4e6) parser.fail("levels", "the finest level would have " + std::to_string(static_cast<long>(dofs)) +
                                             " dofs, more than this chapter's 4e6 (lower --levels or --n0)");
+  const double m = (o.nonmortar == 1 ? n1 : n2) - 1, t = (o.nonmortar == 1 ? n2 : n1) + 1;
+  const double c = std::min(5000.0, 4 * (n1 + 1) + 4 * (n2 + 1));
+  const std::string memory = mortar::memory_shortfall(
+      {{"the sparse solves (" + std::to_string(static_cast<long>(dofs)) + " dofs)", 3500 * dofs},
+       {"the mortar's S = B K^-1 B^T on Gamma_c", mortar::schur_dense_bytes(m, t) + mortar::dense_bytes(m, m)},
+       {"Nitsche's Schur complement on the contact dofs", 3 * mortar::dense_bytes(c, c)}},
+      mortar::machine_memory());
+  if (!memory.empty()) parser.fail("levels", memory);
   mortar::prepare_output_folder(parser, o.out);
   mortar::note_nearly_incompressible(o);
 }

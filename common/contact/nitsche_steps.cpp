@@ -125,7 +125,13 @@ SparseMatrix free_block_plus(const ReducedSystem& free, const std::vector<Eigen:
 
 std::unique_ptr<NitscheStepSolver> make_step_solver(NitscheLinearSolver kind, const ReducedSystem& free,
                                                     const std::vector<int>& contact, bool symmetric) {
-  if (kind == NitscheLinearSolver::condensed && cholmod_available()) {
+  // The dense factorization costs |c|^3 / 3 a step: from a few thousand contact dofs on (long,
+  // thin bodies) it outgrows the sparse factorization it replaces.
+  constexpr std::size_t max_condensed = 5000;
+  std::vector<int> touched(contact);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  if (kind == NitscheLinearSolver::condensed && cholmod_available() && touched.size() <= max_condensed) {
     try {
       return std::make_unique<CondensedSteps>(free, contact, symmetric);
     } catch (const std::runtime_error&) {

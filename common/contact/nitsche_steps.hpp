@@ -43,7 +43,8 @@ SparseMatrix free_block_plus(const ReducedSystem& free, const std::vector<Eigen:
 
 // `free` holds K_ff and the numbering (kept by reference: it must outlive the solver); contact
 // the full dofs C can touch; symmetric: theta = 1 or penalty. The condensed way falls back to
-// the sparse one without CHOLMOD, and where K_ff alone is singular (a body that only the
+// the sparse one without CHOLMOD, beyond 5000 contact dofs (its dense work per step would
+// outgrow a sparse factorization), and where K_ff alone is singular (a body that only the
 // contact holds).
 std::unique_ptr<NitscheStepSolver> make_step_solver(NitscheLinearSolver kind, const ReducedSystem& free,
                                                     const std::vector<int>& contact, bool symmetric);
