@@ -1,10 +1,10 @@
 #include "level.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "common/contact/bilateral_contact.hpp"
 #include "common/fem/errors.hpp"
+#include "common/interface/interface_trace.hpp"
 #include "common/timing/stopwatch.hpp"
 #include "krylov.hpp"
 
@@ -29,15 +29,14 @@ Level make_level(const Options& o, const Scene& scene, int index) {
   level.h = level.bodies.max_edge_length();
   level.count_krylov = level.bodies.num_dofs() <= o.krylov_max_dofs;
   if (o.gap == "interpolated") {
-    std::vector<double> x, value;
-    for (const mortar::NitscheSegment& s : mortar::nitsche_segments(level.bodies, {})) x.push_back(s.a);
-    x.push_back(o.L);
-    for (double xi : x) value.push_back(scene.gap(xi));
-    level.gap = [x, value](double p) {
-      const std::size_t e = std::clamp<std::size_t>(std::upper_bound(x.begin(), x.end(), p) - x.begin(), 1, x.size() - 1) - 1;
-      const double t = (p - x[e]) / (x[e + 1] - x[e]);
-      return (1 - t) * value[e] + t * value[e + 1];
-    };
+    // the merged grid's breakpoints as a bare P1 trace, g at its nodes
+    mortar::InterfaceTrace grid;
+    for (const mortar::NitscheSegment& s : mortar::nitsche_segments(level.bodies, {})) grid.x.push_back(s.a);
+    grid.x.push_back(o.L);
+    grid.nodes.assign(grid.x.size(), -1);
+    std::vector<double> value;
+    for (double xi : grid.x) value.push_back(scene.gap(xi));
+    level.gap = [grid, value](double p) { return grid.evaluate(value, p); };
   }
   // from a / 2 inside the zone to a / 4 outside its right edge, 600 points
   const double a = scene.exact->half_width(), x0 = scene.exact->centre();
@@ -52,6 +51,7 @@ mortar::NitscheOptions method_options(const Options& o, const std::string& metho
     n.theta = o.theta;
     n.gamma0 = o.gamma0;
     n.body1_weight = body1_weight(o);
+    n.harmonic_weight = o.traction == "harmonic";
     return n;
   }
   n.penalty = true;
@@ -91,7 +91,12 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
   r.time_s = clock.seconds();
   r.u = s.u;
   r.residual = s.residual;
-  if (level.count_krylov) r.krylov_iterations = krylov_iterations(s.last_matrix, options.penalty || options.theta == 1);
+  r.lu_fallbacks = s.lu_fallbacks;
+  r.failure = s.failure;
+  if (level.count_krylov) {
+    r.krylov_counted = true;
+    r.krylov_iterations = krylov_iterations(s.last_matrix, options.penalty || options.theta == 1);
+  }
   r.newton_steps = s.newton_steps;
   r.converged = s.converged;
   r.solver = s.solver;

@@ -28,7 +28,10 @@ struct MethodResult {
   int newton_steps = 0;
   bool converged = true;
   double residual = 0;  // Nitsche and penalty: max |R| / max |K u| on the free dofs at the end
-  int krylov_iterations = -1;  // of the last linear system (krylov.hpp); mortar: K's; -1: not counted
+  int lu_fallbacks = 0;  // Nitsche and penalty: symmetric steps that were not positive definite
+  std::string failure;   // why Newton stopped early, or empty
+  bool krylov_counted = false;  // (Level::count_krylov)
+  int krylov_iterations = 0;    // of the last linear system (krylov.hpp; -1: did not converge); mortar: K's
   std::string solver;
   double time_s = 0;
   std::vector<double> pressure_samples;  // at Level::sample_x

@@ -7,6 +7,7 @@
 //   ch11_nitsche_contact --h-ratio 1/3            # the other mesh ratio
 //   ch11_nitsche_contact --sweep gamma0           # errors and Newton steps against gamma0
 //   ch11_nitsche_contact --sweep stiffness        # E1/E2 = 1e-6 .. 1e6, each body's traction
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
     mortar::JsonObject results;
     results.set("dofs", finest.bodies.num_dofs()).set("limit_s", finest.limit_s);
     for (const chapter11::MethodResult& r : finest.methods) {
-      if (r.name != "mortar" && r.name != "dual") results.set("newton_residual_" + r.name, r.residual);
+      if (r.name != "mortar" && r.name != "dual")
+        results.set("newton_residual_" + r.name, r.residual).set("lu_fallback_steps_" + r.name, r.lu_fallbacks);
       results.set("newton_steps_" + r.name, r.newton_steps)
           .set("converged_" + r.name, r.converged)
           .set("err_energy_" + r.name, r.err_energy)
@@ -59,8 +61,11 @@ int main(int argc, char** argv) {
     for (const std::string m : {"nitsche", "penalty", "penalty_fixed"}) {
       const chapter11::PatchResult patch = chapter11::nitsche_patch_test(o, chapter11::method_options(o, m));
       results.set("patch_test_rel_error_" + m, patch.rel_error);
-      std::printf("patch test, %s: max |sigma_22 + p| / p = %.3g (%d Newton steps)\n", m.c_str(), patch.rel_error,
-                  patch.newton_steps);
+      if (std::isfinite(patch.rel_error))
+        std::printf("patch test, %s: max |sigma_22 + p| / p = %.3g (%d Newton steps)\n", m.c_str(), patch.rel_error,
+                    patch.newton_steps);
+      else
+        std::printf("patch test, %s: Newton did not converge in %d steps\n", m.c_str(), patch.newton_steps);
     }
     std::vector<chapter11::SweepPoint> sweep;
     if (o.sweep == "gamma0") {

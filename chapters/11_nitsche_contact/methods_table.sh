@@ -66,6 +66,15 @@ def show(v, digits=3):
     return "-" if v is None else f"{v:.{digits}g}"
 
 
+def count(text):  # an iteration count: "-" where not counted, "failed" where -1
+    v = number(text)
+    return "-" if v is None else "failed" if v < 0 else str(int(v))
+
+
+def rate(v):
+    return "-" if v is None or not isinstance(v, (int, float)) else f"{v:.2f}"
+
+
 kind, _, column = mode.partition(":")
 if kind == "rates":
     local, levels = rows("local_rates.csv"), rows("convergence.csv")
@@ -83,38 +92,38 @@ elif kind == "summary":
     print("| method | energy rate | L2 rate | energy error | L2 error | pressure error | Newton steps |")
     print("|---|---|---|---|---|---|---|")
     for key, label in methods:
-        print(f"| {label} | {rates[f'err_energy_{key}']:.2f} | {rates[f'err_l2_{key}']:.2f} | "
+        print(f"| {label} | {rate(rates.get(f'err_energy_{key}'))} | {rate(rates.get(f'err_l2_{key}'))} | "
               f"{show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
-              f"{show(number(last[f'err_pressure_{key}']))} | {int(float(last[f'newton_steps_{key}']))} |")
+              f"{show(number(last[f'err_pressure_{key}']))} | {count(last[f'newton_steps_{key}'])} |")
 elif kind == "steps":
     levels = rows("convergence.csv")
     print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
     print("|---|" + "---|" * len(levels))
     for key, label in methods:
-        print(f"| {label} | " + " | ".join(str(int(float(r[f"newton_steps_{key}"]))) for r in levels) + " |")
+        print(f"| {label} | " + " | ".join(count(r[f"newton_steps_{key}"]) for r in levels) + " |")
 elif kind == "krylov":
-    levels = [r for r in rows("convergence.csv") if number(r["krylov_iterations_nitsche"]) is not None]
+    levels = [r for r in rows("convergence.csv") if r["krylov_iterations_nitsche"] != ""]
     print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
     print("|---|" + "---|" * len(levels))
     for key, label in methods:
         label = label + (" (K)" if key == "mortar" else " (T^T K T)" if key == "dual" else "")
-        print(f"| {label} | " + " | ".join(str(int(float(r[f"krylov_iterations_{key}"]))) for r in levels) + " |")
+        print(f"| {label} | " + " | ".join(count(r[f"krylov_iterations_{key}"]) for r in levels) + " |")
 elif kind == "finest":
     last = rows("convergence.csv")[-1]
     print("| method | energy error | L2 error | pressure error | \\|a_h - a\\| [m] | Newton steps | Krylov iterations |")
     print("|---|---|---|---|---|---|---|")
     for key, label in methods:
-        krylov = number(last[f"krylov_iterations_{key}"])
         print(f"| {label} | {show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
               f"{show(number(last[f'err_pressure_{key}']))} | {show(number(last[f'half_width_error_m_{key}']))} | "
-              f"{int(float(last[f'newton_steps_{key}']))} | {'-' if krylov is None else int(krylov)} |")
+              f"{count(last[f'newton_steps_{key}'])} | {count(last[f'krylov_iterations_{key}'])} |")
 elif kind == "speed":
     levels = rows("convergence.csv")
     print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
     print("|---|" + "---|" * len(levels))
     print("| physical limit [s] | " + " | ".join(show(number(r["limit_s"])) for r in levels) + " |")
     for key, label in methods:
-        cells = [show(number(r[f"time_s_{key}"]) / number(r["limit_s"])) for r in levels]
+        cells = [show(number(r[f"time_s_{key}"]) / number(r["limit_s"]) if number(r[f"time_s_{key}"]) and number(r["limit_s"])
+                      else None) for r in levels]
         print(f"| {label} | " + " | ".join(cells) + " |")
 elif kind == "sweep":
     data = rows("gamma_sweep.csv")

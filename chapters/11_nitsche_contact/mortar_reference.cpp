@@ -59,7 +59,10 @@ MethodResult run_mortar(const Level& level, const Scene& scene, int nonmortar, b
   r.solver = mortar::backend_name(mortar::fastest_spd_backend());
   r.u = system.expand(u_free);
   // the matrix its sparse solves see: K on the free dofs (standard basis), T^T K T (dual)
-  if (level.count_krylov) r.krylov_iterations = krylov_iterations(dual ? condensed->A : reduced.K, true);
+  if (level.count_krylov) {
+    r.krylov_counted = true;
+    r.krylov_iterations = krylov_iterations(dual ? condensed->A : reduced.K, true);
+  }
   std::tie(r.err_energy, r.err_l2) = displacement_errors(level, scene, r.u);
   const mortar::InterfaceCurve pressure = mortar::contact_pressure(gamma, c, lambda);
   const auto exact_p = [&](double x) { return scene.exact->pressure(x); };

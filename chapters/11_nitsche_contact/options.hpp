@@ -39,8 +39,8 @@ struct Options : mortar::TwoBodyOptions {
 
 void parse_options(mortar::OptionParser& parser, Options& o, int argc, char** argv);
 
-// The weight w of body 1's traction in p(u) = w p^1 + (1 - w) p^2 for --traction (harmonic:
-// from the coarsest level's sizes; the ratio h1 / h2 is the same on every level).
+// The weight w of body 1's traction in p(u) = w p^1 + (1 - w) p^2 for --traction body1, body2
+// or mean (harmonic weighs each segment by its own h1 and h2: NitscheOptions::harmonic_weight).
 double body1_weight(const Options& o);
 
 }  // namespace chapter11

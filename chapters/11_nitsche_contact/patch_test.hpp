@@ -3,7 +3,8 @@
 // exact stress is sigma_22 = -p in both bodies and P1 holds it; Nitsche is consistent, so it
 // must give it to round-off for every theta, gamma0 and traction weight. Penalty transmits p
 // through a uniform penetration p / gamma: exact stress too, as long as gamma is the same
-// along Gamma_c (it is: h1 is uniform here).
+// along Gamma_c (patch_test.cpp makes it so, with --jitter too). Body 1 is held by the contact
+// alone, loaded by the pressure on its top.
 #pragma once
 
 #include "common/contact/nitsche_contact.hpp"

@@ -25,9 +25,13 @@ void solve_level(const Options& o, const Scene& scene, Level& level, const Level
       level.methods.push_back(run_without_multipliers(level, scene, m, method_options(o, m), nested ? coarser : nullptr,
                                                       nested ? &coarser->methods[k] : nullptr));
     const MethodResult& r = level.methods.back();
-    std::printf("level %d  %-13s energy %.4e  L2 %.4e  pressure %.4e  |a_h - a| %.3e m  steps %2d%s  Krylov %4d  "
-                "%.3f s\n", level.index, m.c_str(), r.err_energy, r.err_l2, r.err_pressure, r.half_width_error_m,
-                r.newton_steps, r.converged ? "" : " (no convergence)", r.krylov_iterations, r.time_s);
+    std::printf("level %d  %-13s energy %.4e  L2 %.4e  pressure %.4e  |a_h - a| %.3e m  steps %2d%s  %.3f s\n",
+                level.index, m.c_str(), r.err_energy, r.err_l2, r.err_pressure, r.half_width_error_m, r.newton_steps,
+                r.converged ? "" : " (no convergence)", r.time_s);
+    if (r.krylov_counted) std::printf("         Krylov iterations of the last matrix: %d\n", r.krylov_iterations);
+    if (r.lu_fallbacks > 0)
+      std::printf("         %d symmetric Newton steps were not positive definite (solved by LU)\n", r.lu_fallbacks);
+    if (!r.failure.empty()) std::printf("         Newton stopped: %s\n", r.failure.c_str());
   }
   level.limit_s = mortar::two_body_limit(level.bodies, level.data);
 }
@@ -45,7 +49,8 @@ mortar::Row level_row(const Level& level) {
     row.push_back({"err_pressure_" + r.name, r.err_pressure});
     row.push_back({"half_width_error_m_" + r.name, r.half_width_error_m});
     row.push_back({"newton_steps_" + r.name, static_cast<double>(r.newton_steps)});
-    row.push_back({"krylov_iterations_" + r.name, r.krylov_iterations >= 0 ? r.krylov_iterations : std::nan("")});
+    // blank where not counted, -1 where the Krylov method did not converge
+    row.push_back({"krylov_iterations_" + r.name, r.krylov_counted ? r.krylov_iterations : std::nan("")});
     row.push_back({"time_s_" + r.name, r.time_s});
   }
   return row;

@@ -101,23 +101,6 @@ int common_side(const std::vector<unsigned>& sides_of_node, int a, int b) {
   return -1;
 }
 
-// Triangle of each edge of the body's trace on Gamma_c (the edge between trace nodes e, e + 1).
-std::vector<int> trace_edge_triangles(const std::vector<MeshEdge>& edges, const InterfaceTrace& trace) {
-  std::vector<int> triangle(trace.num_elements(), -1);
-  std::vector<std::pair<std::pair<int, int>, int>> wanted;
-  for (int e = 0; e < trace.num_elements(); ++e) {
-    const int p = trace.nodes[e], q = trace.nodes[e + 1];
-    wanted.push_back({{std::min(p, q), std::max(p, q)}, e});
-  }
-  std::sort(wanted.begin(), wanted.end());
-  for (const MeshEdge& edge : edges) {
-    if (edge.t1 >= 0) continue;
-    const auto it = std::lower_bound(wanted.begin(), wanted.end(), std::make_pair(std::make_pair(edge.a, edge.b), -1));
-    if (it != wanted.end() && it->first == std::make_pair(edge.a, edge.b)) triangle[it->second] = edge.t0;
-  }
-  return triangle;
-}
-
 // Volume: h_T^2 / E ||f + div sigma_h||_T^2, div sigma_h = 0 on P1 (the interior residual of Hild
 // and Nicaise's estimator, squared and divided by E so that eta has the energy norm's units).
 void volume_terms(const Mesh& mesh, double E, const VectorField& f, int l, Sink& sink) {
@@ -312,7 +295,7 @@ ContactEstimate estimate_contact_error(const TwoBodies& bodies, const Eigen::Vec
     const std::vector<MeshEdge> edges = mesh_edges(body.mesh);
     const std::vector<Eigen::Vector3d> stress = element_stresses(body.mesh, body.material, bodies.part(u, l));
     const InterfaceTrace& trace = l == gamma.nonmortar ? gamma.nonmortar_trace : gamma.mortar_trace;
-    edge_triangle[l] = trace_edge_triangles(edges, trace);
+    edge_triangle[l] = trace_triangles(body.mesh, trace);
     if (std::count(edge_triangle[l].begin(), edge_triangle[l].end(), -1) > 0)
       throw std::invalid_argument("estimate_contact_error: a trace edge is no boundary edge of its body");
     volume_terms(body.mesh, E, data.body_force[l], l, sink);

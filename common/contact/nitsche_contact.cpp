@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -19,28 +20,6 @@ using Local = Eigen::Matrix<double, 12, 1>;
 
 // The side of body l on Gamma_c: the bottom of body 1, the top of body 2.
 Side contact_side(int l) { return l == 0 ? Side::bottom : Side::top; }
-
-// The triangle of each trace element: the one triangle having both its end nodes.
-std::vector<int> triangles_on_trace(const Mesh& mesh, const InterfaceTrace& trace) {
-  std::map<std::pair<int, int>, int> edge_triangle;
-  std::vector<bool> on_trace(mesh.num_nodes(), false);
-  for (int node : trace.nodes) on_trace[node] = true;
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
-    const auto& v = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const int i = v[k], j = v[(k + 1) % 3];
-      if (on_trace[i] && on_trace[j]) edge_triangle[{std::min(i, j), std::max(i, j)}] = t;
-    }
-  }
-  std::vector<int> triangle(trace.num_elements());
-  for (int e = 0; e < trace.num_elements(); ++e) {
-    const int i = trace.nodes[e], j = trace.nodes[e + 1];
-    const auto it = edge_triangle.find({std::min(i, j), std::max(i, j)});
-    if (it == edge_triangle.end()) throw std::logic_error("nitsche_segments: a trace edge belongs to no triangle");
-    triangle[e] = it->second;
-  }
-  return triangle;
-}
 
 // What one body contributes to a segment: its triangle's 6 dofs at local positions 6 l .. 6 l + 5,
 // -sigma_yy of that triangle as a functional, and its trace's y-displacement at a and b.
@@ -134,22 +113,22 @@ double harmonic_body1_weight(double E1, double h1, double E2, double h2) {
 std::vector<NitscheSegment> nitsche_segments(const TwoBodies& bodies, const NitscheOptions& o) {
   const InterfaceTrace t1 = trace_on_side(bodies.body(0).mesh, contact_side(0));
   const InterfaceTrace t2 = trace_on_side(bodies.body(1).mesh, contact_side(1));
-  const std::vector<int> tri1 = triangles_on_trace(bodies.body(0).mesh, t1);
-  const std::vector<int> tri2 = triangles_on_trace(bodies.body(1).mesh, t2);
+  const std::vector<int> tri1 = trace_triangles(bodies.body(0).mesh, t1);
+  const std::vector<int> tri2 = trace_triangles(bodies.body(1).mesh, t2);
+  for (const auto* tri : {&tri1, &tri2})
+    if (std::count(tri->begin(), tri->end(), -1) > 0) throw std::logic_error("nitsche_segments: a trace edge belongs to no triangle");
   const MergedGrid grid = merge_traces(t1, t2);
-  const double w = o.body1_weight, E1 = bodies.body(0).material.E(), E2 = bodies.body(1).material.E();
+  const double E1 = bodies.body(0).material.E(), E2 = bodies.body(1).material.E();
   std::vector<NitscheSegment> segments;
   segments.reserve(grid.segments.size());
   for (const MergedSegment& m : grid.segments) {
     NitscheSegment s;
     s.a = m.a;
     s.b = m.b;
-    s.p.setZero();
-    s.jump_a.setZero();
-    s.jump_b.setZero();
+    const double h1 = t1.x[m.element1 + 1] - t1.x[m.element1], h2 = t2.x[m.element2 + 1] - t2.x[m.element2];
+    const double w = o.harmonic_weight ? harmonic_body1_weight(E1, h1, E2, h2) : o.body1_weight;
     fill_body(bodies, 0, t1, m.element1, tri1[m.element1], m.a, m.b, w, s);
     fill_body(bodies, 1, t2, m.element2, tri2[m.element2], m.a, m.b, 1 - w, s);
-    const double h1 = t1.x[m.element1 + 1] - t1.x[m.element1], h2 = t2.x[m.element2 + 1] - t2.x[m.element2];
     s.gamma = o.fixed_gamma > 0 ? o.fixed_gamma : o.gamma0 * (w * E1 / h1 + (1 - w) * E2 / h2);
     segments.push_back(s);
   }
@@ -164,19 +143,19 @@ void add_nitsche_terms(const std::vector<NitscheSegment>& segments, const std::f
   for (const NitscheSegment& s : segments) {
     const SegmentState st = state_of(s, o, u);
     const Local p = o.penalty ? Local::Zero() : s.p;
-    const double g = s.gamma, length = s.b - s.a;
+    const double gamma = s.gamma, length = s.b - s.a;
     // - (theta / gamma) int p(u) p(v): p is constant on the segment
-    Local r = -(theta / g) * length * st.pu * p;
-    Eigen::Matrix<double, 12, 12> A = -(theta / g) * length * p * p.transpose();
+    Local r = -(theta / gamma) * length * st.pu * p;
+    Eigen::Matrix<double, 12, 12> A = -(theta / gamma) * length * p * p.transpose();
     for (const Piece& piece : pieces(s, st, gap)) {
       if (!piece.active) continue;
       for (std::size_t q = 0; q < rule.points.size(); ++q) {
         const double x = piece.a + rule.points[q] * (piece.b - piece.a), W = rule.weights[q] * (piece.b - piece.a);
         const Local J = s.jump(x);
-        const Local test = theta * p + g * J;  // P_theta(v)
-        const Local trial = p + g * J;         // the derivative of P_gamma(u)
-        r += (W / g) * std::max(0.0, p_gamma(s, st, gap, x)) * test;
-        A += (W / g) * test * trial.transpose();
+        const Local test = theta * p + gamma * J;  // P_theta(v)
+        const Local trial = p + gamma * J;         // the derivative of P_gamma(u)
+        r += (W / gamma) * std::max(0.0, p_gamma(s, st, gap, x)) * test;
+        A += (W / gamma) * test * trial.transpose();
       }
     }
     for (int i = 0; i < 12; ++i) residual[s.dofs[i]] += r(i);
@@ -266,15 +245,26 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
     add_nitsche_terms(segments, gap, o, sol.u, R, &triplets);
     Eigen::VectorXd r(free.free_dofs.size());
     for (std::size_t k = 0; k < free.free_dofs.size(); ++k) r[k] = -R[free.free_dofs[k]];
-    const Eigen::VectorXd du = steps->solve(triplets, r);
+    sol.newton_steps = step;
+    Eigen::VectorXd du;
+    try {
+      du = steps->solve(triplets, r);
+    } catch (const std::runtime_error& e) {
+      // a singular Newton matrix (theta = 1 or a stiff body's traction far from coercive): the
+      // run goes on with the last iterate, reported as not converged
+      sol.failure = e.what();
+      break;
+    }
     sol.solver = steps->name();
+    if (!du.allFinite()) {
+      sol.failure = "the Newton step is not finite";
+      break;
+    }
     double u_max = 0;
     for (std::size_t k = 0; k < free.free_dofs.size(); ++k) {
       sol.u[free.free_dofs[k]] += du[k];
       u_max = std::max(u_max, std::fabs(sol.u[free.free_dofs[k]]));
     }
-    sol.newton_steps = step;
-    if (!du.allFinite()) break;
     if (du.lpNorm<Eigen::Infinity>() <= o.tol * std::max(u_max, 1e-300)) {
       sol.converged = true;
       break;
@@ -292,7 +282,7 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
       r = std::max(r, std::fabs(R[i]));
       scale = std::max(scale, std::fabs(Ku[i]));
     }
-  sol.residual = scale > 0 ? r / scale : r;
+  sol.residual = !sol.u.allFinite() || !std::isfinite(r) ? std::numeric_limits<double>::infinity() : scale > 0 ? r / scale : r;
   return sol;
 }
 

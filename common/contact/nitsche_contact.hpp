@@ -30,6 +30,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -46,6 +47,7 @@ struct NitscheOptions {
   double gamma0 = 1;     // gamma = gamma0 E / h as above
   double fixed_gamma = 0;  // > 0: this gamma on every segment instead (penalty with gamma fixed)
   double body1_weight = 1;  // w: whose traction p(u) reads, 1 = body 1, 0 = body 2
+  bool harmonic_weight = false;  // instead, w of harmonic_body1_weight on each segment's h1, h2
   int max_newton_steps = 60;
   double tol = 1e-10;  // Newton stops when |du| <= tol |u| (max norms)
   NitscheLinearSolver linear_solver = NitscheLinearSolver::condensed;  // nitsche_steps.hpp
@@ -64,7 +66,7 @@ struct NitscheSegment {
   double a = 0, b = 0;
   double gamma = 0;
   std::array<int, 12> dofs{};
-  Eigen::Matrix<double, 12, 1> p, jump_a, jump_b;
+  Eigen::Matrix<double, 12, 1> p = Eigen::Matrix<double, 12, 1>::Zero(), jump_a = p, jump_b = p;
   Eigen::Matrix<double, 12, 1> jump(double x) const {
     const double t = (x - a) / (b - a);
     return (1 - t) * jump_a + t * jump_b;
@@ -107,6 +109,7 @@ struct NitscheSolution {
   bool converged = false;
   std::string solver;  // the last step's linear solver (nitsche_steps.hpp)
   int lu_fallbacks = 0;  // symmetric steps whose matrix was not positive definite (solved by LU)
+  std::string failure;   // why Newton stopped early (a singular step), or empty
   double residual = 0;  // max |R| / max |K u| over the free dofs at the end
   SparseMatrix last_matrix;  // keep_last_matrix: the last Newton step's matrix on the free dofs
 };

@@ -25,6 +25,7 @@ class SparseSteps : public NitscheStepSolver {
         return cholesky_.solve(r);
       } catch (const std::runtime_error&) {
         ++lu_fallbacks_;
+        cholesky_analysed_ = false;  // a failed factorization leaves no factor to refactorize
       }
     }
     if (lu_analysed_) lu_.refactorize(A);
@@ -89,7 +90,12 @@ class CondensedSteps : public NitscheStepSolver {
       }
     }
     if (!solved) {
-      du_c = M.partialPivLu().solve(rhs);
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+      // as the sparse LU (sparse_lu.hpp): a reciprocal condition below 1e-14 is singular
+      if (!(lu.rcond() > 1e-14))
+        throw std::runtime_error("the Newton matrix on Gamma_c is singular to working precision (reciprocal condition " +
+                                 std::to_string(lu.rcond()) + ")");
+      du_c = lu.solve(rhs);
       name_ = "Cholesky of K once, dense LU on Gamma_c";
     }
     Eigen::VectorXd w = Eigen::VectorXd::Zero(r.size());

@@ -1,5 +1,7 @@
 #include "common/interface/interface_trace.hpp"
 
+#include <map>
+
 #include <algorithm>
 #include <random>
 #include <stdexcept>
@@ -118,6 +120,23 @@ InterfaceTrace uniform_trace(double L, int n, double jitter, unsigned seed, int 
   t.nodes.assign(static_cast<std::size_t>(t.num_dofs()), -1);
   check_increasing(t);
   return t;
+}
+
+std::vector<int> trace_triangles(const Mesh& mesh, const InterfaceTrace& trace) {
+  std::map<std::pair<int, int>, int> element_of;  // (smaller, larger end node) -> element
+  for (int e = 0; e < trace.num_elements(); ++e) {
+    const int i = trace.nodes[e], j = trace.nodes[e + 1];
+    element_of[{std::min(i, j), std::max(i, j)}] = e;
+  }
+  std::vector<int> triangle(trace.num_elements(), -1);
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
+    const auto& v = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const auto it = element_of.find({std::min(v[k], v[(k + 1) % 3]), std::max(v[k], v[(k + 1) % 3])});
+      if (it != element_of.end()) triangle[it->second] = t;
+    }
+  }
+  return triangle;
 }
 
 }  // namespace mortar

@@ -44,6 +44,10 @@ struct InterfaceTrace {
 // Gamma_c (horizontal).
 InterfaceTrace trace_on_side(const Mesh& mesh, Side side);
 
+// The triangle of each element of a trace on its mesh: the one triangle with both end points of
+// the element among its vertices (-1 where there is none: the trace is not that mesh's).
+std::vector<int> trace_triangles(const Mesh& mesh, const InterfaceTrace& trace);
+
 // A bare 1D grid of n elements on [0, L], with interior end points moved by up to
 // jitter * h / 2 (jitter in [0, 0.4]), of degree 1 or 2.
 InterfaceTrace uniform_trace(double L, int n, double jitter = 0, unsigned seed = 1, int degree = 1);
