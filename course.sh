@@ -103,8 +103,9 @@ configure() {
 # Chapter 8's Cattaneo-Mindlin scene: normal load, then shear in ten steps, and the load paths
 # (about 90 s), and its manufactured scene under Tresca's law (about 40 s).
 # Chapter 10's punch (singular corners: adaptive against uniform rates) and its bilateral scene.
-# Chapter 11 at the other mesh ratio, with theta = -1, and its two sweeps on level 4: gamma0
-# for every theta (about 90 s) and the stiffness ratio with each body's traction (about 20 s).
+# Chapter 11 at the other mesh ratio (six levels, about 65 s), with theta = -1 (about 40 s), and
+# its two sweeps on level 4: gamma0 for every theta (about 50 s) and the stiffness ratio with
+# each body's traction (about 15 s).
 extra_runs=("ch01_interface_traces|edge|--trace edge --levels 12|chapter 1, square-root edge"
             "ch03_pointwise_matching|ratio_1_3|--h-ratio 1/3 --n0 6 --levels 7|chapter 3, h2/h1 = 1/3"
             "ch05_unilateral_uzawa|partial|--scene partial --levels 4 --no-compare|chapter 5, scene partial"

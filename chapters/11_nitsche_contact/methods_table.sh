@@ -11,6 +11,7 @@
 #                     (summary.json), the finest level's errors and its Newton steps
 #   finest            one row per method on the finest level: the errors, |a_h - a|, Newton
 #                     steps, Krylov iterations (where counted)
+#   values:COLUMN     one row per method: COLUMN (half_width_error_m, ...) on each level
 #   steps             one row per method: its Newton steps (mortar: active-set steps) on each level
 #   krylov            one row per method: the Krylov iterations of its last matrix on each level
 #                     where they were counted (--krylov-max-dofs), and K's beside them
@@ -31,8 +32,8 @@ build=${BUILD:-build}
 program=$build/ch11_nitsche_contact
 [ -x "$program" ] || { echo "methods_table.sh: no $program (cmake --build $build --target ch11_nitsche_contact)" >&2; exit 2; }
 case "$mode" in
-  rates:* | summary | finest | steps | krylov | speed | sweep:* | stiffness:*) ;;
-  *) echo "methods_table.sh: unknown mode '$mode' (rates:COLUMN, summary, finest, steps, krylov, speed, sweep:COLUMN, stiffness:COLUMN)" >&2
+  rates:* | values:* | summary | finest | steps | krylov | speed | sweep:* | stiffness:*) ;;
+  *) echo "methods_table.sh: unknown mode '$mode' (rates:COLUMN, values:COLUMN, summary, finest, steps, krylov, speed, sweep:COLUMN, stiffness:COLUMN)" >&2
      exit 2 ;;
 esac
 name=$(echo "default $*" | tr -c 'A-Za-z0-9.\n-' '_')
@@ -95,6 +96,12 @@ elif kind == "summary":
         print(f"| {label} | {rate(rates.get(f'err_energy_{key}'))} | {rate(rates.get(f'err_l2_{key}'))} | "
               f"{show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
               f"{show(number(last[f'err_pressure_{key}']))} | {count(last[f'newton_steps_{key}'])} |")
+elif kind == "values":
+    levels = rows("convergence.csv")
+    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
+    print("|---|" + "---|" * len(levels))
+    for key, label in methods:
+        print(f"| {label} | " + " | ".join(show(number(r[f"{column}_{key}"])) for r in levels) + " |")
 elif kind == "steps":
     levels = rows("convergence.csv")
     print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
