@@ -68,6 +68,21 @@ int triangle_at(const Mesh& mesh, const Eigen::Vector2d& p) {
   return -1;
 }
 
+// Chapter 5's exact Hertz scene on 16 and 11 elements: u prescribed on every outer side, so
+// K_ff alone is positive definite.
+struct SmallHertz {
+  Material m{1, 0.3};
+  HertzHalfPlanes exact{m, m, 0.5, std::sqrt(2.0) / 6, 1};
+  TwoBodies bodies;
+  SceneData scene;
+  SmallHertz() : bodies(make_two_bodies(geometry(), m, m)), scene(manufactured_scene_all_sides(bodies, exact)) {}
+  static TwoBodyGeometry geometry() {
+    TwoBodyGeometry g;
+    g.n1 = 16; g.m1 = 16; g.n2 = 11; g.m2 = 11; g.H1 = g.H2 = 1;
+    return g;
+  }
+};
+
 }  // namespace
 
 // The segment's functionals against the fields they stand for, computed another way: [u.n] from
@@ -237,12 +252,9 @@ TEST(NitscheContact, a_start_of_the_wrong_size_is_refused) {
 // positive definite and the condensed way is taken), for every variant.
 TEST(NitscheContact, condensed_and_sparse_newton_steps_agree) {
   if (!cholmod_available()) GTEST_SKIP() << "the condensed way needs CHOLMOD's trailing factor";
-  TwoBodyGeometry g;
-  g.n1 = 16; g.m1 = 16; g.n2 = 11; g.m2 = 11; g.H1 = g.H2 = 1;
-  const Material m(1, 0.3);
-  const HertzHalfPlanes exact(m, m, 0.5, std::sqrt(2.0) / 6, 1);
-  const TwoBodies b = make_two_bodies(g, m, m);
-  const SceneData scene = manufactured_scene_all_sides(b, exact);
+  const SmallHertz h;
+  const TwoBodies& b = h.bodies;
+  const SceneData& scene = h.scene;
   for (NitscheOptions o : variants()) {
     o.linear_solver = NitscheLinearSolver::condensed;
     const NitscheSolution condensed = solve_nitsche_contact(b, scene, parabola, o);
@@ -260,12 +272,9 @@ TEST(NitscheContact, condensed_and_sparse_newton_steps_agree) {
 // then a later positive definite step to Cholesky again (refactorizing after a failed
 // factorization was an error); a singular step ends Newton with a reason, never an exception.
 TEST(NitscheContact, symmetric_steps_that_lose_positive_definiteness_are_solved_or_reported) {
-  TwoBodyGeometry g;
-  g.n1 = 16; g.m1 = 16; g.n2 = 11; g.m2 = 11; g.H1 = g.H2 = 1;
-  const Material m(1, 0.3);
-  const HertzHalfPlanes exact(m, m, 0.5, std::sqrt(2.0) / 6, 1);
-  const TwoBodies b = make_two_bodies(g, m, m);
-  const SceneData scene = manufactured_scene_all_sides(b, exact);
+  const SmallHertz h;
+  const TwoBodies& b = h.bodies;
+  const SceneData& scene = h.scene;
   for (const NitscheLinearSolver solver : {NitscheLinearSolver::sparse, NitscheLinearSolver::condensed})
     for (const double gamma0 : {1e-3, 0.2, 1.0}) {
       NitscheOptions o;
@@ -283,13 +292,8 @@ TEST(NitscheContact, symmetric_steps_that_lose_positive_definiteness_are_solved_
 // The sparse way's Cholesky after a step that was not positive definite: the next positive
 // definite step must factorize again, not refactorize a factor the failure left behind.
 TEST(NitscheContact, sparse_steps_recover_cholesky_after_an_indefinite_step) {
-  TwoBodyGeometry g;
-  g.n1 = 4; g.m1 = 2; g.n2 = 3; g.m2 = 2;
-  const TwoBodies b = make_two_bodies(g, Material(1, 0.3), Material(1, 0.3));
-  const Material m(1, 0.3);
-  const HertzHalfPlanes exact(m, m, 0.5, std::sqrt(2.0) / 6, 1);
-  const SceneData scene = manufactured_scene_all_sides(b, exact);
-  const ReducedSystem free = eliminate_dirichlet(b.stiffness(), scene.F, scene.dirichlet);
+  const SmallHertz h;
+  const ReducedSystem free = eliminate_dirichlet(h.bodies.stiffness(), h.scene.F, h.scene.dirichlet);
   ASSERT_GT(free.K.rows(), 0);
   const int d = free.free_dofs[0];
   const std::vector<Eigen::Triplet<double>> none = {{d, d, 0.0}}, indefinite = {{d, d, -1e3}};

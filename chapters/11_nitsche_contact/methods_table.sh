@@ -76,6 +76,28 @@ def rate(v):
     return "-" if v is None or not isinstance(v, (int, float)) else f"{v:.2f}"
 
 
+def per_level(levels, cell, first=()):
+    """One column per level (its dofs), one row per method: cell(key, level row); `first` rows before."""
+    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
+    print("|---|" + "---|" * len(levels))
+    for label, cells in first:
+        print(f"| {label} | " + " | ".join(cells) + " |")
+    for key, label in methods:
+        if key == "mortar" and kind == "krylov":
+            label += " (K)"
+        if key == "dual" and kind == "krylov":
+            label += " (T^T K T)"
+        print(f"| {label} | " + " | ".join(cell(key, r) for r in levels) + " |")
+
+
+def per_method(header, cells):
+    """One row per method: its label, then cells(key)."""
+    print("| method | " + " | ".join(header) + " |")
+    print("|---|" + "---|" * len(header))
+    for key, label in methods:
+        print(f"| {label} | " + " | ".join(cells(key)) + " |")
+
+
 kind, _, column = mode.partition(":")
 if kind == "rates":
     local, levels = rows("local_rates.csv"), rows("convergence.csv")
@@ -90,48 +112,31 @@ if kind == "rates":
 elif kind == "summary":
     rates = json.load(open(f"{out}/summary.json"))["rates"]
     last = rows("convergence.csv")[-1]
-    print("| method | energy rate | L2 rate | energy error | L2 error | pressure error | Newton steps |")
-    print("|---|---|---|---|---|---|---|")
-    for key, label in methods:
-        print(f"| {label} | {rate(rates.get(f'err_energy_{key}'))} | {rate(rates.get(f'err_l2_{key}'))} | "
-              f"{show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
-              f"{show(number(last[f'err_pressure_{key}']))} | {count(last[f'newton_steps_{key}'])} |")
+    per_method(["energy rate", "L2 rate", "energy error", "L2 error", "pressure error", "Newton steps"],
+               lambda key: [rate(rates.get(f"err_energy_{key}")), rate(rates.get(f"err_l2_{key}")),
+                            show(number(last[f"err_energy_{key}"])), show(number(last[f"err_l2_{key}"])),
+                            show(number(last[f"err_pressure_{key}"])), count(last[f"newton_steps_{key}"])])
 elif kind == "values":
-    levels = rows("convergence.csv")
-    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
-    print("|---|" + "---|" * len(levels))
-    for key, label in methods:
-        print(f"| {label} | " + " | ".join(show(number(r[f"{column}_{key}"])) for r in levels) + " |")
+    per_level(rows("convergence.csv"), lambda key, r: show(number(r[f"{column}_{key}"])))
 elif kind == "steps":
-    levels = rows("convergence.csv")
-    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
-    print("|---|" + "---|" * len(levels))
-    for key, label in methods:
-        print(f"| {label} | " + " | ".join(count(r[f"newton_steps_{key}"]) for r in levels) + " |")
+    per_level(rows("convergence.csv"), lambda key, r: count(r[f"newton_steps_{key}"]))
 elif kind == "krylov":
-    levels = [r for r in rows("convergence.csv") if r["krylov_iterations_nitsche"] != ""]
-    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
-    print("|---|" + "---|" * len(levels))
-    for key, label in methods:
-        label = label + (" (K)" if key == "mortar" else " (T^T K T)" if key == "dual" else "")
-        print(f"| {label} | " + " | ".join(count(r[f"krylov_iterations_{key}"]) for r in levels) + " |")
+    per_level([r for r in rows("convergence.csv") if r["krylov_iterations_nitsche"] != ""],
+              lambda key, r: count(r[f"krylov_iterations_{key}"]))
 elif kind == "finest":
     last = rows("convergence.csv")[-1]
-    print("| method | energy error | L2 error | pressure error | \\|a_h - a\\| [m] | Newton steps | Krylov iterations |")
-    print("|---|---|---|---|---|---|---|")
-    for key, label in methods:
-        print(f"| {label} | {show(number(last[f'err_energy_{key}']))} | {show(number(last[f'err_l2_{key}']))} | "
-              f"{show(number(last[f'err_pressure_{key}']))} | {show(number(last[f'half_width_error_m_{key}']))} | "
-              f"{count(last[f'newton_steps_{key}'])} | {count(last[f'krylov_iterations_{key}'])} |")
+    per_method(["energy error", "L2 error", "pressure error", "\\|a_h - a\\| [m]", "Newton steps", "Krylov iterations"],
+               lambda key: [show(number(last[f"err_{e}_{key}"])) for e in ("energy", "l2", "pressure")] +
+                           [show(number(last[f"half_width_error_m_{key}"])), count(last[f"newton_steps_{key}"]),
+                            count(last[f"krylov_iterations_{key}"])])
 elif kind == "speed":
     levels = rows("convergence.csv")
-    print("| method |" + "".join(f" {int(float(r['dofs']))} dofs |" for r in levels))
-    print("|---|" + "---|" * len(levels))
-    print("| physical limit [s] | " + " | ".join(show(number(r["limit_s"])) for r in levels) + " |")
-    for key, label in methods:
-        cells = [show(number(r[f"time_s_{key}"]) / number(r["limit_s"]) if number(r[f"time_s_{key}"]) and number(r["limit_s"])
-                      else None) for r in levels]
-        print(f"| {label} | " + " | ".join(cells) + " |")
+
+    def ratio(key, r):
+        time, limit = number(r[f"time_s_{key}"]), number(r["limit_s"])
+        return show(time / limit if time and limit else None)
+
+    per_level(levels, ratio, [("physical limit [s]", [show(number(r["limit_s"])) for r in levels])])
 elif kind == "sweep":
     data = rows("gamma_sweep.csv")
     variants = [("nitsche", "1.000000", "theta = 1"), ("nitsche", "0.000000", "theta = 0"),
