@@ -83,7 +83,7 @@ class CondensedSteps : public NitscheStepSolver {
       const Eigen::LLT<Eigen::MatrixXd> llt(M);
       if (llt.info() == Eigen::Success) {
         du_c = llt.solve(rhs);
-        name_ = "Cholesky of K once, dense Cholesky on Gamma_c";
+        name_ = "K factorized once; dense Cholesky on Gamma_c";
         solved = true;
       } else {
         ++lu_fallbacks_;
@@ -96,7 +96,7 @@ class CondensedSteps : public NitscheStepSolver {
         throw std::runtime_error("the Newton matrix on Gamma_c is singular to working precision (reciprocal condition " +
                                  std::to_string(lu.rcond()) + ")");
       du_c = lu.solve(rhs);
-      name_ = "Cholesky of K once, dense LU on Gamma_c";
+      name_ = "K factorized once; dense LU on Gamma_c";
     }
     Eigen::VectorXd w = Eigen::VectorXd::Zero(r.size());
     const Eigen::VectorXd Cdu = Cc * du_c;
