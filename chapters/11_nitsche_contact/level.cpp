@@ -101,8 +101,7 @@ MethodResult run_without_multipliers(const Level& level, const Scene& scene, con
   r.converged = s.converged;
   r.solver = s.solver;
   std::tie(r.err_energy, r.err_l2) = displacement_errors(level, scene, s.u);
-  const auto segments = mortar::nitsche_segments(level.bodies, options);
-  const auto pressure = mortar::nitsche_pressure(segments, level.gap, options, s.u);
+  const auto pressure = mortar::nitsche_pressure(s.segments, level.gap, options, s.u);
   const auto exact_p = [&](double x) { return scene.exact->pressure(x); };
   const auto [error, norm] = mortar::pressure_l2_error(pressure, exact_p, scene.exact->pressure_kinks());
   r.err_pressure = error / norm;

@@ -227,8 +227,9 @@ NitscheSolution solve_nitsche_contact(const TwoBodies& bodies, const SceneData& 
                                       const std::function<double(double)>& gap, const NitscheOptions& o,
                                       const Eigen::VectorXd* start) {
   const SparseMatrix K = bodies.stiffness();
-  const std::vector<NitscheSegment> segments = nitsche_segments(bodies, o);
   NitscheSolution sol;
+  sol.segments = nitsche_segments(bodies, o);
+  const std::vector<NitscheSegment>& segments = sol.segments;
   sol.u = start != nullptr ? *start : Eigen::VectorXd::Zero(bodies.num_dofs());
   if (sol.u.size() != bodies.num_dofs()) throw std::invalid_argument("solve_nitsche_contact: the start has the wrong size");
   for (std::size_t k = 0; k < scene.dirichlet.dofs.size(); ++k) sol.u[scene.dirichlet.dofs[k]] = scene.dirichlet.values[k];

@@ -112,6 +112,7 @@ struct NitscheSolution {
   std::string failure;   // why Newton stopped early (a singular step), or empty
   double residual = 0;  // max |R| / max |K u| over the free dofs at the end
   SparseMatrix last_matrix;  // keep_last_matrix: the last Newton step's matrix on the free dofs
+  std::vector<NitscheSegment> segments;  // the segments it was solved on (for nitsche_pressure)
 };
 
 // Generalized Newton in the displacements alone, from `start` (both bodies, all dofs; its
